@@ -1,0 +1,70 @@
+# The two set-up commands of hyst (see README.md):
+#   make demo   install missing Debian packages, build, run the demo (writes out/demo/)
+#   make test   the same set-up, then every test, a short run of every benchmark, and the C++
+#               tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+
+BUILD      ?= build
+ASAN_BUILD ?= build-asan
+JOBS       ?= $(shell nproc)
+DEMO_OUT   ?= out/demo
+
+# Debian 12 packages the build and the tests need.
+DEBIAN_PACKAGES := cmake make g++ pkg-config \
+  libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
+
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps configure build demo test test-cpp bench-smoke test-sanitize format format-check clean
+
+all: build
+
+# apt-get update and install run only when a package is missing.
+deps:
+	@missing=""; \
+	for p in $(DEBIAN_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing missing Debian packages:$$missing"; \
+	  $(SUDO) apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
+	else \
+	  echo "all Debian packages present"; \
+	fi
+
+configure: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/apps/hyst_demo $(DEMO_OUT)
+
+test: build
+	$(MAKE) test-cpp bench-smoke test-sanitize
+
+test-cpp:
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# Proves every benchmark runs; it does not time anything (see docs/performance.md for that).
+bench-smoke:
+	@set -e; for b in $(BUILD)/bench/bench_*; do \
+	  echo "== $$b"; $$b --benchmark_min_time=0.001 > /dev/null; \
+	done; echo "benchmarks ran"
+
+test-sanitize: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHYST_SANITIZE=ON \
+	  -DHYST_BUILD_BENCHMARKS=OFF -DHYST_BUILD_EXAMPLES=OFF
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+format:
+	git ls-files '*.hpp' '*.cpp' | xargs clang-format -i
+
+format-check:
+	git ls-files '*.hpp' '*.cpp' | xargs clang-format --dry-run --Werror
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -1,0 +1,27 @@
+#pragma once
+//! \file
+//! Whole-file reading and crash-safe writing (POSIX).
+//!
+//! write_file_atomically() never leaves a partial file under the final name: the content goes to a
+//! temporary file in the same folder (".<name>.tmp.<pid>.<counter>"), which is flushed to disk
+//! (fsync), closed and then renamed over the target in one step. A reader sees either the old
+//! file or the complete new one. On failure the temporary file is removed and the target, if it
+//! existed, is left as it was.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace hyst::io {
+
+//! Replaces (or creates) the file at `path` with `content`, atomically. An existing file keeps its
+//! permission bits. The folder must exist. Throws hyst::Error naming the path and the reason,
+//! e.g. "cannot write 'out/fit.csv': No such file or directory (creating the temporary file
+//! 'out/.fit.csv.tmp.4711.0')".
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+//! The whole content of a file, byte for byte. Throws hyst::Error naming the path and the reason,
+//! e.g. "cannot open 'x.csv': No such file or directory".
+std::string read_file(const std::filesystem::path& path);
+
+}  // namespace hyst::io

@@ -1,0 +1,35 @@
+#include "hyst/core/checks.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+
+namespace hyst {
+
+void require_finite(std::span<const double> samples, std::string_view name) {
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (!std::isfinite(samples[k])) {
+      throw Error(fmt::format("{}[{}] = {} is not finite", name, k, samples[k]));
+    }
+  }
+}
+
+void require_finite(double value, std::string_view name) {
+  if (!std::isfinite(value)) throw Error(fmt::format("{} = {} is not finite", name, value));
+}
+
+void require_same_size(std::size_t a, std::string_view name_a, std::size_t b,
+                       std::string_view name_b) {
+  if (a != b) {
+    throw Error(fmt::format("{} has {} values but {} has {}; they must have the same length",
+                            name_a, a, name_b, b));
+  }
+}
+
+void require_not_empty(std::size_t size, std::string_view name) {
+  if (size == 0) throw Error(fmt::format("{} is empty", name));
+}
+
+}  // namespace hyst

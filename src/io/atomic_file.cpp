@@ -1,0 +1,153 @@
+#include "hyst/io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <memory>
+#include <system_error>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+
+namespace hyst::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string reason(int error_number) {
+  return std::generic_category().message(error_number);
+}
+
+[[noreturn]] void fail_write(const fs::path& path, int error_number, std::string_view step) {
+  throw Error(fmt::format("cannot write '{}': {} ({})", path.string(), reason(error_number), step));
+}
+
+//! A unique name in the target's folder: unique across processes (pid) and within one (counter).
+fs::path temporary_path_for(const fs::path& path) {
+  static std::atomic<unsigned long long> counter{0};
+  // Shortened so that the name stays within the usual 255-byte limit of a file name.
+  const std::string target = path.filename().string().substr(0, 200);
+  const auto name = fmt::format(".{}.tmp.{}.{}", target, static_cast<long long>(::getpid()),
+                                counter.fetch_add(1));
+  return path.parent_path() / name;
+}
+
+//! Owns the temporary file: closes it and removes it unless the write was committed.
+class TemporaryFile {
+ public:
+  TemporaryFile(fs::path path, int fd) : path_(std::move(path)), fd_(fd) {}
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  ~TemporaryFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(path_.c_str());
+  }
+
+  int fd() const { return fd_; }
+  const fs::path& path() const { return path_; }
+
+  //! Closes the descriptor; returns errno, or 0 on success.
+  int close() {
+    const int result = ::close(fd_);
+    fd_ = -1;
+    return result == 0 ? 0 : errno;
+  }
+  void commit() { committed_ = true; }
+
+ private:
+  fs::path path_;
+  int fd_;
+  bool committed_ = false;
+};
+
+//! Writes everything, retrying after interrupts and partial writes; returns errno or 0.
+int write_all(int fd, std::string_view content) {
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t written = ::write(fd, data, left);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  return 0;
+}
+
+//! Makes the rename itself durable. Best effort: not every file system supports it.
+void sync_folder(const fs::path& folder) {
+  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  static_cast<void>(::fsync(fd));
+  ::close(fd);
+}
+
+struct FileCloser {
+  void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+}  // namespace
+
+void write_file_atomically(const fs::path& path, std::string_view content) {
+  if (path.filename().empty() || path.filename() == "." || path.filename() == "..") {
+    throw Error(fmt::format("cannot write '{}': the path does not name a file", path.string()));
+  }
+
+  const fs::path temporary = temporary_path_for(path);
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    fail_write(path, errno, fmt::format("creating the temporary file '{}'", temporary.string()));
+  }
+  TemporaryFile file(temporary, fd);
+
+  // Keep the permission bits of a file being replaced (the new one would get the umask default).
+  struct stat target_status {};
+  if (::stat(path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
+    static_cast<void>(::fchmod(file.fd(), target_status.st_mode & 07777));  // best effort
+  }
+
+  if (const int error = write_all(file.fd(), content)) fail_write(path, error, "writing");
+  while (::fsync(file.fd()) != 0) {
+    if (errno != EINTR) fail_write(path, errno, "flushing to disk");
+  }
+  if (const int error = file.close()) fail_write(path, error, "closing");
+
+  std::error_code rename_error;
+  fs::rename(temporary, path, rename_error);
+  if (rename_error) {
+    throw Error(fmt::format("cannot write '{}': {} (renaming '{}' over it)", path.string(),
+                            rename_error.message(), temporary.string()));
+  }
+  file.commit();
+  sync_folder(path.parent_path());
+}
+
+std::string read_file(const fs::path& path) {
+  errno = 0;
+  const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) {
+    throw Error(fmt::format("cannot open '{}': {}", path.string(), reason(errno)));
+  }
+  std::string content;
+  char buffer[65536];
+  while (true) {
+    const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get());
+    const int error_number = errno;
+    content.append(buffer, count);
+    if (count == sizeof buffer) continue;
+    if (std::ferror(file.get())) {
+      throw Error(fmt::format("cannot read '{}': {}", path.string(), reason(error_number)));
+    }
+    return content;
+  }
+}
+
+}  // namespace hyst::io

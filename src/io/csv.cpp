@@ -1,0 +1,329 @@
+#include "hyst/io/csv.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <iterator>
+#include <system_error>
+#include <utility>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
+
+namespace hyst::io {
+namespace {
+
+constexpr std::string_view kBlank = " \t";
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+//! Separators in the order automatic detection prefers them; ' ' stands for runs of blanks.
+constexpr std::string_view kDetectionOrder = "\t;, ";
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(kBlank);
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(kBlank);
+  return text.substr(first, last - first + 1);
+}
+
+//! "data.csv: " or "" for an unnamed source.
+std::string prefix(std::string_view source) {
+  return source.empty() ? std::string() : fmt::format("{}: ", source);
+}
+
+//! "data.csv:7: " or "line 7: " for an unnamed source.
+std::string prefix(std::string_view source, std::size_t line) {
+  return source.empty() ? fmt::format("line {}: ", line) : fmt::format("{}:{}: ", source, line);
+}
+
+std::string describe_separator(char separator) {
+  if (separator == '\t') return "tab";
+  if (separator == ' ') return "space";
+  if (static_cast<unsigned char>(separator) < 0x20 || separator == 0x7f) {
+    return fmt::format("character {:#04x}", static_cast<unsigned char>(separator));
+  }
+  return fmt::format("'{}'", separator);
+}
+
+//! Splits a line into trimmed fields. separator ' ' means runs of blanks.
+void split(std::string_view line, char separator, std::vector<std::string_view>& fields) {
+  fields.clear();
+  if (separator == ' ') {
+    std::string_view rest = trim(line);
+    while (!rest.empty()) {
+      const auto end = std::min(rest.find_first_of(kBlank), rest.size());
+      fields.push_back(rest.substr(0, end));
+      rest = trim(rest.substr(end));
+    }
+    return;
+  }
+  std::size_t start = 0;
+  while (true) {
+    const auto end = line.find(separator, start);
+    if (end == std::string_view::npos) {
+      fields.push_back(trim(line.substr(start)));
+      return;
+    }
+    fields.push_back(trim(line.substr(start, end - start)));
+    start = end + 1;
+  }
+}
+
+char detect_separator(std::string_view header) {
+  for (const char candidate : kDetectionOrder) {
+    if (candidate == ' ' || header.find(candidate) != std::string_view::npos) return candidate;
+  }
+  return ' ';
+}
+
+//! Physical lines with their 1-based numbers; a trailing '\r' (CRLF) is removed.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : rest_(text) {
+    if (rest_.starts_with(kByteOrderMark)) rest_.remove_prefix(kByteOrderMark.size());
+  }
+
+  bool next(std::string_view& line) {
+    if (finished_) return false;
+    ++number_;
+    const auto end = rest_.find('\n');
+    if (end == std::string_view::npos) {
+      line = rest_;
+      finished_ = true;
+    } else {
+      line = rest_.substr(0, end);
+      rest_.remove_prefix(end + 1);
+    }
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    return true;
+  }
+  std::size_t number() const { return number_; }
+
+ private:
+  std::string_view rest_;
+  std::size_t number_ = 0;
+  bool finished_ = false;
+};
+
+//! Parses one field as a finite double; throws naming file, line and column.
+double parse_number(std::string_view field, std::string_view source, std::size_t line,
+                    std::size_t column, std::string_view name) {
+  const auto where = [&] {
+    return fmt::format("{}column {} ('{}')", prefix(source, line), column + 1, name);
+  };
+  if (field.empty()) throw Error(fmt::format("{}: empty field, expected a number", where()));
+  // from_chars does not accept a leading '+'; accept one, but not "+-1".
+  std::string_view digits = field;
+  if (digits.front() == '+') digits.remove_prefix(1);
+  double value = 0.0;
+  std::from_chars_result result{digits.data(), std::errc::invalid_argument};
+  if (!digits.empty() && !(digits.size() < field.size() && digits.front() == '-')) {
+    result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  }
+  if (result.ec == std::errc::result_out_of_range) {
+    throw Error(fmt::format("{}: '{}' is out of range for a double", where(), field));
+  }
+  if (result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
+    const bool decimal_comma = field.find(',') != std::string_view::npos;
+    throw Error(fmt::format("{}: '{}' is not a number{}", where(), field,
+                            decimal_comma ? " (decimal commas are not supported; use '.')" : ""));
+  }
+  if (!std::isfinite(value)) throw Error(fmt::format("{}: {} is not finite", where(), field));
+  return value;
+}
+
+//! Rules for a column name that hold for every table: returns an error text or "".
+std::string name_problem(std::string_view name) {
+  if (name.empty()) return "is empty";
+  if (trim(name).size() != name.size()) return "has leading or trailing spaces";
+  if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
+  return {};
+}
+
+std::string format_table(const Table& table, const CsvWriteOptions& options,
+                         const std::string& where) {
+  const char separator = options.separator;
+  const auto position = kDetectionOrder.find(separator);
+  if (separator == 0 || position == std::string_view::npos) {
+    throw Error(fmt::format("{}csv separator {} must be ',', ';', tab or space", where,
+                            describe_separator(separator)));
+  }
+  if (options.significant_digits < 1 || options.significant_digits > 17) {
+    throw Error(fmt::format("{}csv significant_digits = {} must be in [1, 17]", where,
+                            options.significant_digits));
+  }
+  if (table.names.size() != table.columns.size()) {
+    throw Error(fmt::format("{}table has {} names but {} columns", where, table.names.size(),
+                            table.columns.size()));
+  }
+  if (table.names.empty()) throw Error(fmt::format("{}table has no columns", where));
+
+  // Names containing the separator, or one that detection prefers to it, would split differently.
+  const std::string_view forbidden = kDetectionOrder.substr(0, position + 1);
+  for (std::size_t j = 0; j < table.names.size(); ++j) {
+    const std::string& name = table.names[j];
+    if (const std::string problem = name_problem(name); !problem.empty()) {
+      throw Error(fmt::format("{}column {} name '{}' {}", where, j + 1, name, problem));
+    }
+    if (const auto at = name.find_first_of(forbidden); at != std::string::npos) {
+      throw Error(fmt::format(
+          "{}column {} name '{}' contains {}, which read_csv would take for a separator", where,
+          j + 1, name, describe_separator(name[at])));
+    }
+    if (j == 0 && name.front() == '#') {
+      throw Error(fmt::format(
+          "{}column 1 name '{}' starts with '#', which read_csv would take for a comment line",
+          where, name));
+    }
+    for (std::size_t i = 0; i < j; ++i) {
+      if (table.names[i] == name) {
+        throw Error(fmt::format("{}column {} ('{}') has the same name as column {}", where, j + 1,
+                                name, i + 1));
+      }
+    }
+  }
+  const std::size_t rows = table.columns.front().size();
+  for (std::size_t j = 1; j < table.columns.size(); ++j) {
+    if (table.columns[j].size() != rows) {
+      throw Error(fmt::format("{}column {} ('{}') has {} values but column 1 ('{}') has {}", where,
+                              j + 1, table.names[j], table.columns[j].size(), table.names[0],
+                              rows));
+    }
+  }
+  if (rows == 0) {
+    throw Error(
+        fmt::format("{}table has no rows (a file without data rows cannot be read back)", where));
+  }
+
+  std::string out;
+  auto sink = std::back_inserter(out);
+  for (std::size_t j = 0; j < table.names.size(); ++j) {
+    if (j > 0) out.push_back(separator);
+    out += table.names[j];
+  }
+  out.push_back('\n');
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t j = 0; j < table.columns.size(); ++j) {
+      const double value = table.columns[j][r];
+      if (!std::isfinite(value)) {
+        throw Error(fmt::format("{}column {} ('{}'), row {}: {} is not finite", where, j + 1,
+                                table.names[j], r + 1, value));
+      }
+      if (j > 0) out.push_back(separator);
+      fmt::format_to(sink, "{:.{}g}", value, options.significant_digits);
+    }
+    out.push_back('\n');
+  }
+  return out;
+}
+
+}  // namespace
+
+bool Table::has_column(std::string_view name) const {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+const std::vector<double>& Table::column(std::string_view name) const {
+  const auto found = std::find(names.begin(), names.end(), name);
+  if (found == names.end() || static_cast<std::size_t>(found - names.begin()) >= columns.size()) {
+    throw Error(fmt::format(
+        "{}no column '{}' (columns: {})", prefix(source), name,
+        names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
+  }
+  return columns[static_cast<std::size_t>(found - names.begin())];
+}
+
+void Table::add_column(std::string name, std::vector<double> values) {
+  if (const std::string problem = name_problem(name); !problem.empty()) {
+    throw Error(fmt::format("{}column name '{}' {}", prefix(source), name, problem));
+  }
+  if (has_column(name)) {
+    throw Error(fmt::format("{}column '{}' already exists", prefix(source), name));
+  }
+  if (!columns.empty() && values.size() != rows()) {
+    throw Error(fmt::format("{}column '{}' has {} values but the table has {} rows", prefix(source),
+                            name, values.size(), rows()));
+  }
+  names.push_back(std::move(name));
+  columns.push_back(std::move(values));
+}
+
+Table parse_csv(std::string_view text, std::string_view source_name,
+                const CsvReadOptions& options) {
+  const std::string_view source = source_name;
+  LineReader reader(text);
+  std::string_view line;
+  std::vector<std::string_view> fields;
+
+  const auto skipped = [&](std::string_view trimmed) {
+    return trimmed.empty() || (options.comment != 0 && trimmed.front() == options.comment);
+  };
+
+  // Header: the first line that is neither blank nor a comment.
+  bool any_text = false;
+  bool found_header = false;
+  while (!found_header && reader.next(line)) {
+    any_text = any_text || !trim(line).empty();
+    found_header = !skipped(trim(line));
+  }
+  if (!found_header) {
+    throw Error(fmt::format("{}file is empty{}", prefix(source),
+                            any_text ? " (it has only blank and comment lines)" : ""));
+  }
+  const char separator = options.separator != 0 ? options.separator : detect_separator(trim(line));
+  const std::size_t header_line = reader.number();
+
+  Table table;
+  table.source = std::string(source);
+  split(line, separator, fields);
+  for (std::size_t j = 0; j < fields.size(); ++j) {
+    if (fields[j].empty()) {
+      throw Error(fmt::format("{}column {} of the header has an empty name",
+                              prefix(source, header_line), j + 1));
+    }
+    for (std::size_t i = 0; i < j; ++i) {
+      if (table.names[i] == fields[j]) {
+        throw Error(fmt::format("{}column {} ('{}') has the same name as column {}",
+                                prefix(source, header_line), j + 1, fields[j], i + 1));
+      }
+    }
+    table.names.emplace_back(fields[j]);
+  }
+  table.columns.resize(table.names.size());
+
+  while (reader.next(line)) {
+    if (skipped(trim(line))) continue;
+    split(line, separator, fields);
+    if (fields.size() != table.names.size()) {
+      throw Error(fmt::format("{}row has {} fields but the header has {}",
+                              prefix(source, reader.number()), fields.size(), table.names.size()));
+    }
+    for (std::size_t j = 0; j < fields.size(); ++j) {
+      table.columns[j].push_back(
+          parse_number(fields[j], source, reader.number(), j, table.names[j]));
+    }
+  }
+  if (table.rows() == 0) {
+    throw Error(fmt::format("{}no data rows after the header", prefix(source)));
+  }
+  return table;
+}
+
+Table read_csv(const std::filesystem::path& path, const CsvReadOptions& options) {
+  return parse_csv(read_file(path), path.string(), options);
+}
+
+std::string format_csv(const Table& table, const CsvWriteOptions& options) {
+  return format_table(table, options, prefix(table.source));
+}
+
+void write_csv(const std::filesystem::path& path, const Table& table,
+               const CsvWriteOptions& options) {
+  const std::string text =
+      format_table(table, options, fmt::format("cannot write '{}': ", path.string()));
+  write_file_atomically(path, text);
+}
+
+}  // namespace hyst::io

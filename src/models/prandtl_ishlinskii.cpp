@@ -1,0 +1,104 @@
+#include "hyst/models/prandtl_ishlinskii.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hyst/core/checks.hpp"
+#include "hyst/core/error.hpp"
+
+namespace hyst {
+namespace {
+
+void validate(const PrandtlIshlinskii::Params& params) {
+  const auto& r = params.thresholds;
+  const auto& p = params.weights;
+  require_not_empty(r.size(), "PI thresholds r");
+  require_same_size(r.size(), "PI thresholds r", p.size(), "PI weights p");
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    require_finite(r[j], fmt::format("PI threshold r[{}]", j));
+    require_finite(p[j], fmt::format("PI weight p[{}]", j));
+  }
+  if (r[0] != 0.0) {
+    throw Error(fmt::format(
+        "PI threshold r[0] = {} must be 0 (the r = 0 play carries the linear term)", r[0]));
+  }
+  for (std::size_t j = 1; j < r.size(); ++j) {
+    if (!(r[j] > r[j - 1])) {
+      throw Error(
+          fmt::format("PI threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]));
+    }
+  }
+  require_finite(params.offset, "PI offset");
+}
+
+}  // namespace
+
+PrandtlIshlinskii::PrandtlIshlinskii(Params params) : params_(std::move(params)) {
+  validate(params_);
+}
+
+PrandtlIshlinskii::State PrandtlIshlinskii::initial_state() const {
+  return State{std::vector<double>(size(), 0.0)};
+}
+
+PrandtlIshlinskii::State PrandtlIshlinskii::state_at_rest(double input) const {
+  require_finite(input, "PI rest input v0");
+  return State{std::vector<double>(size(), input)};
+}
+
+PrandtlIshlinskii::State PrandtlIshlinskii::make_state(std::vector<double> play) const {
+  const auto& r = params_.thresholds;
+  require_same_size(play.size(), "PI state w", r.size(), "PI thresholds r");
+  for (std::size_t j = 0; j < play.size(); ++j) {
+    require_finite(play[j], fmt::format("PI state w[{}]", j));
+  }
+  // Reachable states: neighbouring plays differ by at most the difference of their thresholds
+  // (this implies the condition for every pair). A relative slack absorbs rounding in states
+  // that were computed by running an input history.
+  double scale = 1.0;
+  for (double w : play)
+    scale = std::max(scale, std::abs(w));
+  const double slack = 1e-12 * scale;
+  for (std::size_t j = 1; j < play.size(); ++j) {
+    const double gap = std::abs(play[j] - play[j - 1]);
+    if (gap > r[j] - r[j - 1] + slack) {
+      throw Error(
+          fmt::format("PI state w[{}] = {} and w[{}] = {} differ by {}, more than "
+                      "r[{}] - r[{}] = {}: no input history reaches this state",
+                      j, play[j], j - 1, play[j - 1], gap, j, j - 1, r[j] - r[j - 1]));
+    }
+  }
+  return State{std::move(play)};
+}
+
+bool PrandtlIshlinskii::is_invertible() const {
+  const auto& p = params_.weights;
+  if (!(p[0] > 0.0)) return false;
+  double partial_sum = 0.0;
+  for (double pj : p) {
+    partial_sum += pj;
+    if (!(partial_sum > 0.0)) return false;
+  }
+  return true;
+}
+
+double PrandtlIshlinskii::output(const State& state) const {
+  require_same_size(state.play.size(), "PI state w", size(), "PI thresholds r");
+  return params_.offset + weighted_sum(state.play.data());
+}
+
+std::vector<double> uniform_thresholds(std::size_t count, double spacing) {
+  if (count == 0) throw Error("uniform thresholds: count = 0 must be >= 1");
+  require_finite(spacing, "uniform threshold spacing");
+  if (!(spacing > 0.0)) {
+    throw Error(fmt::format("uniform threshold spacing = {} must be > 0", spacing));
+  }
+  std::vector<double> thresholds(count);
+  for (std::size_t j = 0; j < count; ++j)
+    thresholds[j] = spacing * static_cast<double>(j);
+  return thresholds;
+}
+
+}  // namespace hyst

@@ -1,0 +1,201 @@
+#include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/expect_error.hpp"
+#include "../support/test_signals.hpp"
+#include "hyst/core/invert.hpp"
+#include "hyst/core/simulate.hpp"
+
+namespace hyst {
+namespace {
+
+// The parameter set of pi_check.py and pi_init_check.py.
+PrandtlIshlinskii reference_model() {
+  return PrandtlIshlinskii(
+      {.thresholds = {0, 0.3, 0.7, 1.0, 1.6, 2.2}, .weights = {0.8, 0.5, 0.3, 0.2, 0.1, 0.05}});
+}
+
+double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double worst = 0;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    worst = std::max(worst, std::abs(a[k] - b[k]));
+  return worst;
+}
+
+// pi_check.py prints r_hat = [0, 0.24, 0.76, 1.24, 2.32, 3.46] and
+// p_hat = [1.25, -0.4808, -0.1442, -0.0694, -0.0292, -0.0135] (4 decimals).
+TEST(InversePrandtlIshlinskii, ParametersMatchThePythonCheck) {
+  const InversePrandtlIshlinskii inverse(reference_model());
+  const auto& params = inverse.inverse_operator().params();
+  const std::vector<double> r_hat{0, 0.24, 0.76, 1.24, 2.32, 3.46};
+  const std::vector<double> p_hat{1.25, -0.4808, -0.1442, -0.0694, -0.0292, -0.0135};
+  for (std::size_t j = 0; j < r_hat.size(); ++j) {
+    EXPECT_NEAR(params.thresholds[j], r_hat[j], 1e-12) << "j = " << j;
+    EXPECT_NEAR(params.weights[j], p_hat[j], 5e-5) << "j = " << j;
+  }
+  // Exact by hand: p_hat_1 = -p_1 / (S_1 S_0) = -0.5 / (1.3 * 0.8).
+  EXPECT_NEAR(params.weights[1], -0.5 / 1.04, 1e-15);
+  EXPECT_EQ(params.offset, 0.0);
+}
+
+// The inverse of the inverse is the model again (the formulas are an involution).
+TEST(InversePrandtlIshlinskii, InvertingTwiceGivesTheModelBack) {
+  const auto model = reference_model();
+  const InversePrandtlIshlinskii inverse(model);
+  const InversePrandtlIshlinskii twice(inverse.inverse_operator());
+  for (std::size_t j = 0; j < model.size(); ++j) {
+    EXPECT_NEAR(twice.inverse_operator().params().thresholds[j], model.params().thresholds[j],
+                1e-14);
+    EXPECT_NEAR(twice.inverse_operator().params().weights[j], model.params().weights[j], 1e-14);
+  }
+}
+
+// pi_check.py: max |P[P^-1[y_d]] - y_d| = 1.78e-15 and max |P^-1[P[v]] - v| = 2.22e-15.
+TEST(InversePrandtlIshlinskii, RoundTripsOnTheReferenceSignal) {
+  const auto model = reference_model();
+  const InversePrandtlIshlinskii inverse(model);
+  const auto signal = test::pi_check_signal();
+
+  auto inverse_state = inverse.initial_state();
+  auto model_state = model.initial_state();
+  std::vector<double> input(signal.size());
+  EXPECT_TRUE(invert(inverse, inverse_state, signal, input).ok());
+  EXPECT_LE(max_abs_difference(simulate(model, model_state, input), signal), 1e-12);
+
+  inverse_state = inverse.initial_state();
+  model_state = model.initial_state();
+  const auto output = simulate(model, model_state, signal);
+  EXPECT_LE(max_abs_difference(simulate(inverse, inverse_state, output), signal), 1e-12);
+}
+
+TEST(InversePrandtlIshlinskii, RoundTripsWithOffsetAndNegativeWeightsOnRandomModels) {
+  std::mt19937_64 rng(77);
+  for (int trial = 0; trial < 25; ++trial) {
+    const std::uint64_t seed = rng();
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    std::mt19937_64 draw(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    PrandtlIshlinskii::Params params{{0.0}, {0.2 + unit(draw)}, 4 * unit(draw) - 2};
+    double partial_sum = params.weights[0];
+    const std::size_t n = 2 + draw() % 30;
+    for (std::size_t j = 1; j < n; ++j) {
+      params.thresholds.push_back(params.thresholds.back() + 0.02 + 0.15 * unit(draw));
+      // Signed weights that keep every partial sum >= 10% of the running total.
+      const double weight = (unit(draw) - 0.4) * partial_sum;
+      params.weights.push_back(weight);
+      partial_sum += weight;
+    }
+    const PrandtlIshlinskii model(params);
+    const InversePrandtlIshlinskii inverse(model);
+    const auto v = test::random_walk(3000, seed, 3.0, 0.25);
+    auto z = model.initial_state();
+    auto zh = inverse.initial_state();
+    const auto y = simulate(model, z, v);
+    const auto v_back = simulate(inverse, zh, y);
+    ASSERT_LE(max_abs_difference(v_back, v), 1e-11);
+  }
+}
+
+// pi_init_check.py: after an arbitrary history, the inverse started from
+// wh_j = S_j z_j + sum_{i>j} p_i z_i reproduces the input (2.2e-15); the naive "all wh_j = y"
+// and the transposed rule leave errors of 0.045 and 0.030 on that check's data.
+TEST(InversePrandtlIshlinskii, ConsistentInitialStateAfterAnArbitraryHistory) {
+  const auto model = reference_model();
+  const InversePrandtlIshlinskii inverse(model);
+  for (std::uint64_t seed : {5u, 6u, 7u}) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    auto z = model.initial_state();
+    const auto history = test::random_walk(300, seed, 3.0, 0.3);
+    simulate(model, z, history);
+    std::vector<double> v(3000);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double t = static_cast<double>(k);
+      v[k] = history.back() + 1.5 * std::sin(2 * std::numbers::pi * t / 700) * std::exp(-t / 2500) +
+             0.3 * std::sin(2 * std::numbers::pi * t / 90);
+    }
+    const auto run_inverse_from = [&](PrandtlIshlinskii::State start) {
+      auto forward_state = z;
+      auto inverse_state = std::move(start);
+      const auto y = simulate(model, forward_state, v);
+      return max_abs_difference(simulate(inverse, inverse_state, y), v);
+    };
+    EXPECT_LE(run_inverse_from(inverse.state_consistent_with(z)), 1e-12);
+
+    const double y0 = model.output(z);
+    const double naive_error = run_inverse_from({std::vector<double>(model.size(), y0)});
+    std::vector<double> transposed(model.size());
+    for (std::size_t j = 0; j < model.size(); ++j) {
+      double below = 0, above = 0;
+      for (std::size_t i = 0; i <= j; ++i)
+        below += model.params().weights[i] * z.play[i];
+      for (std::size_t i = j + 1; i < model.size(); ++i)
+        above += model.params().weights[i];
+      transposed[j] = below + above * z.play[j];
+    }
+    const double transposed_error = run_inverse_from({transposed});
+    // The pitfall documented by the reference: both wrong rules fail visibly.
+    if (naive_error < 1e-6 || transposed_error < 1e-6) {
+      ADD_FAILURE() << "wrong initial-state rules should fail on this history: naive "
+                    << naive_error << ", transposed " << transposed_error;
+    }
+  }
+}
+
+TEST(InversePrandtlIshlinskii, StateMapsAreInversesOfEachOther) {
+  const auto model = reference_model();
+  const InversePrandtlIshlinskii inverse(model);
+  auto z = model.initial_state();
+  simulate(model, z, test::random_walk(400, 9, 3.0, 0.3));
+  const auto back = inverse.forward_state_consistent_with(inverse.state_consistent_with(z));
+  for (std::size_t j = 0; j < model.size(); ++j)
+    EXPECT_NEAR(back.play[j], z.play[j], 1e-13);
+  // At rest: all forward plays at u0 correspond to all inverse plays at y0 = S_n u0.
+  const auto rest = inverse.state_consistent_with(model.state_at_rest(0.5));
+  for (double w : rest.play)
+    EXPECT_NEAR(w, model.output(model.state_at_rest(0.5)), 1e-15);
+}
+
+TEST(InversePrandtlIshlinskii, ReportsSaturationInsteadOfThrowing) {
+  const auto model = reference_model();
+  const InversePrandtlIshlinskii inverse(model, {.input_min = -1.0, .input_max = 1.0});
+  auto state = inverse.initial_state();
+  const std::vector<double> targets{0.0, 0.5, 5.0, 0.0, -5.0, 0.0};
+  std::vector<double> inputs(targets.size());
+  const auto report = invert(inverse, state, targets, inputs);
+  EXPECT_EQ(report.saturated_samples, 2u);
+  EXPECT_EQ(report.first_saturated, 2u);
+  EXPECT_EQ(inputs[2], 1.0);
+  EXPECT_EQ(inputs[4], -1.0);
+  auto fresh = inverse.initial_state();
+  EXPECT_EQ(inverse.solve(fresh, 5.0).status, InverseStatus::above_range);
+  EXPECT_EQ(inverse.solve(fresh, -5.0).status, InverseStatus::below_range);
+  EXPECT_EQ(inverse.solve(fresh, 0.0).status, InverseStatus::ok);
+  EXPECT_EQ(to_string(InverseStatus::above_range), "above_range");
+}
+
+TEST(InversePrandtlIshlinskii, RejectsModelsWithoutInverse) {
+  EXPECT_HYST_ERROR(InversePrandtlIshlinskii(PrandtlIshlinskii({{0, 1}, {-0.5, 1.0}})),
+                    "PI weight p[0] = -0.5 must be > 0 for the inverse to exist");
+  EXPECT_HYST_ERROR(InversePrandtlIshlinskii(PrandtlIshlinskii({{0, 1}, {0.0, 1.0}})),
+                    "PI weight p[0] = 0 must be > 0");
+  EXPECT_HYST_ERROR(
+      InversePrandtlIshlinskii(PrandtlIshlinskii({{0, 1, 2, 3}, {1.0, 0.5, -1.0, -0.75}})),
+      "PI partial sum S[3] = p[0] + ... + p[3] = -0.25 must be > 0");
+  EXPECT_HYST_ERROR(InversePrandtlIshlinskii(reference_model(), {.input_min = 1, .input_max = 0}),
+                    "v_min = 1 and v_max = 0 must satisfy v_min <= v_max");
+  const InversePrandtlIshlinskii inverse(reference_model());
+  auto state = inverse.initial_state();
+  std::vector<double> targets{0.0, NAN};
+  std::vector<double> inputs(2);
+  EXPECT_HYST_ERROR(invert(inverse, state, targets, inputs), "targets[1] = nan is not finite");
+}
+
+}  // namespace
+}  // namespace hyst
