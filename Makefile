@@ -10,11 +10,13 @@ DEMO_OUT   ?= out/demo
 
 # Debian 12 packages the build and the tests need.
 DEBIAN_PACKAGES := cmake make g++ pkg-config \
-  libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
+  libmatio-dev nlohmann-json3-dev libcli11-dev libceres-dev libboost-dev \
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest gnuplot-nox
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test test-cpp bench-smoke test-sanitize format format-check clean
+.PHONY: all deps configure build demo test test-cpp test-python bench-smoke test-sanitize format format-check clean
 
 all: build
 
@@ -46,6 +48,14 @@ test: build
 
 test-cpp:
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# The Python module's tests and examples alone (make test runs them too, through ctest), with
+# Debian's interpreter, which the module is built for.
+test-python: build
+	PYTHONPATH=$(BUILD)/python /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests
+	@set -e; for e in examples/*.py; do \
+	  echo "== $$e"; PYTHONPATH=$(BUILD)/python /usr/bin/python3 $$e; \
+	done
 
 # Proves every benchmark runs; it does not time anything (see docs/performance.md for that).
 bench-smoke:

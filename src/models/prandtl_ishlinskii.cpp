@@ -14,23 +14,39 @@ namespace {
 void validate(const PrandtlIshlinskii::Params& params) {
   const auto& r = params.thresholds;
   const auto& p = params.weights;
-  require_not_empty(r.size(), "PI thresholds r");
-  require_same_size(r.size(), "PI thresholds r", p.size(), "PI weights p");
+  if (r.empty()) throw Error("PI thresholds r is empty", "thresholds");
+  if (r.size() != p.size()) {
+    throw Error(fmt::format("PI has {} thresholds r but {} weights p; they must have the same "
+                            "length",
+                            r.size(), p.size()),
+                "weights");
+  }
   for (std::size_t j = 0; j < r.size(); ++j) {
-    require_finite(r[j], fmt::format("PI threshold r[{}]", j));
-    require_finite(p[j], fmt::format("PI weight p[{}]", j));
+    if (!std::isfinite(r[j])) {
+      throw Error(fmt::format("PI threshold r[{}] = {} is not finite", j, r[j]),
+                  fmt::format("thresholds[{}]", j));
+    }
+    if (!std::isfinite(p[j])) {
+      throw Error(fmt::format("PI weight p[{}] = {} is not finite", j, p[j]),
+                  fmt::format("weights[{}]", j));
+    }
   }
   if (r[0] != 0.0) {
-    throw Error(fmt::format(
-        "PI threshold r[0] = {} must be 0 (the r = 0 play carries the linear term)", r[0]));
+    throw Error(
+        fmt::format("PI threshold r[0] = {} must be 0 (the r = 0 play carries the linear term)",
+                    r[0]),
+        "thresholds[0]");
   }
   for (std::size_t j = 1; j < r.size(); ++j) {
     if (!(r[j] > r[j - 1])) {
       throw Error(
-          fmt::format("PI threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]));
+          fmt::format("PI threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]),
+          fmt::format("thresholds[{}]", j));
     }
   }
-  require_finite(params.offset, "PI offset");
+  if (!std::isfinite(params.offset)) {
+    throw Error(fmt::format("PI offset = {} is not finite", params.offset), "offset");
+  }
 }
 
 }  // namespace

@@ -165,7 +165,7 @@ TEST(PrandtlIshlinskii, RejectsBadParameters) {
   using P = PrandtlIshlinskii;
   EXPECT_HYST_ERROR(P({.thresholds = {}, .weights = {}}), "PI thresholds r is empty");
   EXPECT_HYST_ERROR(P({.thresholds = {0, 1, 2}, .weights = {1, 1}}),
-                    "PI thresholds r has 3 values but PI weights p has 2");
+                    "PI has 3 thresholds r but 2 weights p");
   EXPECT_HYST_ERROR(P({.thresholds = {0.1, 1}, .weights = {1, 1}}),
                     "PI threshold r[0] = 0.1 must be 0");
   EXPECT_HYST_ERROR(P({.thresholds = {0, 0.5, 1, 0.9, 2}, .weights = {1, 1, 1, 1, 1}}),
@@ -179,6 +179,21 @@ TEST(PrandtlIshlinskii, RejectsBadParameters) {
   EXPECT_HYST_ERROR(P({.thresholds = {0}, .weights = {1}, .offset = NAN}),
                     "PI offset = nan is not finite");
   EXPECT_HYST_ERROR(uniform_thresholds(4, -1.0), "spacing = -1 must be > 0");
+}
+
+TEST(PrandtlIshlinskii, ErrorsNameTheOffendingField) {
+  const auto field_of = [](PrandtlIshlinskii::Params params) -> std::string {
+    try {
+      PrandtlIshlinskii model(std::move(params));
+    } catch (const Error& error) {
+      return error.field();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(field_of({.thresholds = {0, 0.5, 1, -0.2}, .weights = {1, 1, 1, 1}}), "thresholds[3]");
+  EXPECT_EQ(field_of({.thresholds = {0, 0.5}, .weights = {1, NAN}}), "weights[1]");
+  EXPECT_EQ(field_of({.thresholds = {0}, .weights = {1}, .offset = INFINITY}), "offset");
+  EXPECT_EQ(field_of({.thresholds = {0, 1}, .weights = {1}}), "weights");
 }
 
 TEST(PrandtlIshlinskii, RejectsUnreachableStates) {

@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace hyst {
 
@@ -14,7 +15,17 @@ namespace hyst {
 //! e.g. "PI threshold r[3] = -0.2 must be >= 0".
 class Error : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit Error(const std::string& message) : std::runtime_error(message) {}
+  //! An error about one parameter: `field` is its name in the Params struct (and in model files),
+  //! with the index where it has one, e.g. "thresholds[3]".
+  Error(const std::string& message, std::string field)
+      : std::runtime_error(message), field_(std::move(field)) {}
+
+  //! The offending parameter field, or empty when the error is not about one field.
+  const std::string& field() const noexcept { return field_; }
+
+ private:
+  std::string field_;
 };
 
 }  // namespace hyst

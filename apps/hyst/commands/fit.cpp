@@ -1,0 +1,224 @@
+// hyst fit: identifies a registered model from measured input/output data and saves the model file
+// with the fit report in its "info" object.
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "../data_source.hpp"
+#include "commands.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/registry/model_file.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst::cli {
+namespace {
+
+struct FitOptions {
+  std::string model;
+  std::string data;
+  std::string input;
+  std::string output;
+  std::string out;
+  std::optional<double> validate_fraction;
+  std::string validation_data;
+  std::string validation_input;
+  std::string validation_output;
+  std::string options_json;
+  std::vector<std::string> option_pairs;
+  std::string report;
+};
+
+//! The fit options: --options (a JSON object), then every --option key=value on top of it. A
+//! value is JSON when it parses as JSON (numbers, true, [0, 0.5], "text"), else a plain string.
+nlohmann::json fit_options(const FitOptions& options) {
+  nlohmann::json json = nlohmann::json::object();
+  if (!options.options_json.empty()) {
+    try {
+      json = nlohmann::json::parse(options.options_json);
+    } catch (const nlohmann::json::parse_error& error) {
+      std::string message = error.what();
+      if (const auto tag_end = message.find("] "); tag_end != std::string::npos) {
+        message = message.substr(tag_end + 2);
+      }
+      throw Error(fmt::format("--options: not valid JSON: {}", message));
+    }
+    if (!json.is_object()) {
+      throw Error(
+          fmt::format("--options: expected a JSON object such as {{\"operators\": 12}}, "
+                      "got {}",
+                      json.type_name()));
+    }
+  }
+  for (const auto& pair : options.option_pairs) {
+    const auto equals = pair.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw Error(fmt::format("--option '{}': expected key=value, e.g. operators=12", pair));
+    }
+    const auto key = pair.substr(0, equals);
+    const auto text = pair.substr(equals + 1);
+    auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    json[key] = value.is_discarded() ? nlohmann::json(text) : value;
+  }
+  return json;
+}
+
+std::string models_that_can_fit(const ModelRegistry& registry) {
+  std::string list;
+  for (const auto& entry : registry.entries()) {
+    if (entry.can_fit()) list += (list.empty() ? "" : ", ") + entry.name;
+  }
+  return list.empty() ? "none" : list;
+}
+
+nlohmann::json metrics_json(const ErrorMetrics& metrics) {
+  return {{"samples", metrics.samples},
+          {"rmse", metrics.rmse},
+          {"nrmse", metrics.nrmse},
+          {"max_error", metrics.max_error}};
+}
+
+void run(const FitOptions& options) {
+  const auto& registry = ModelRegistry::builtin();
+  const auto& entry = registry.find(options.model);
+  if (!entry.can_fit()) {
+    throw Error(fmt::format("model '{}' cannot be fitted (models that can: {})", entry.name,
+                            models_that_can_fit(registry)));
+  }
+  auto fit_json = fit_options(options);
+  check_output_folder(options.out, "--out");
+  if (!options.report.empty()) check_output_folder(options.report, "--report");
+
+  const DataSource data(options.data);
+  const auto record = read_column_pair(data, options.input, options.output, "data");
+
+  FitRequest request;
+  request.input = record.input;
+  request.output = record.output;
+  nlohmann::json data_info = {{"file", options.data},
+                              {"input", options.input},
+                              {"output", options.output},
+                              {"samples", record.input.size()}};
+
+  // Validation: the last part of the record, or a separate record.
+  std::optional<ColumnPair> held_out;
+  if (options.validate_fraction) {
+    const double fraction = *options.validate_fraction;
+    if (!(fraction > 0.0 && fraction < 1.0)) {
+      throw Error(fmt::format("--validate-fraction {} must be > 0 and < 1", fraction));
+    }
+    const auto samples = record.input.size();
+    const auto held = static_cast<std::size_t>(std::llround(fraction * double(samples)));
+    if (held < 1 || held >= samples) {
+      throw Error(fmt::format(
+          "--validate-fraction {} of {} samples leaves {} for validation and {} for fitting; "
+          "both need at least one",
+          fraction, samples, held, samples - held));
+    }
+    // The fitter splits the record and predicts the held-out part by continuing the simulation
+    // from the state reached at the end of the fit part.
+    request.validate_fraction = fraction;
+    data_info["validation"] = {{"kind", "last part of the record"}, {"fraction", fraction}};
+  } else if (!options.validation_data.empty()) {
+    const DataSource validation(options.validation_data);
+    const auto input = options.validation_input.empty() ? options.input : options.validation_input;
+    const auto output =
+        options.validation_output.empty() ? options.output : options.validation_output;
+    held_out = read_column_pair(validation, input, output, "validation data");
+    request.validation_input = held_out->input;
+    request.validation_output = held_out->output;
+    data_info["validation"] = {{"kind", "separate record"},
+                               {"file", options.validation_data},
+                               {"input", input},
+                               {"output", output},
+                               {"samples", held_out->input.size()}};
+  }
+  request.options = fit_json;
+
+  auto outcome = entry.fit(request);
+  const auto& report = outcome.report;
+  if (report.termination == Termination::failed) {
+    throw Error(
+        fmt::format("fitting '{}' to {} failed: {}", entry.name, options.data, report.message));
+  }
+
+  nlohmann::json info = {{"created_by", "hyst fit"},
+                         {"model", report.model},
+                         {"method", report.method},
+                         {"termination", std::string(to_string(report.termination))},
+                         {"message", report.message},
+                         {"iterations", report.iterations},
+                         {"initial_cost", report.initial_cost},
+                         {"final_cost", report.final_cost},
+                         {"parameters", report.parameters},
+                         {"fit", metrics_json(report.fit)},
+                         {"seconds", report.seconds},
+                         {"data", data_info},
+                         {"options", fit_json}};
+  if (report.validation) info["validation"] = metrics_json(*report.validation);
+
+  save_model(options.out, *outcome.model, info);
+  if (!options.report.empty()) io::write_file_atomically(options.report, report.full());
+
+  fmt::print("{}\n", report.brief());
+  fmt::print("wrote {}{}\n", options.out,
+             options.report.empty() ? "" : fmt::format(" and {}", options.report));
+  if (report.termination != Termination::converged) {
+    warn(fmt::format("the fit stopped before converging ({}): {}", to_string(report.termination),
+                     report.message));
+  }
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto options = std::make_shared<FitOptions>();
+  auto* command = app.add_subcommand(
+      "fit", "Fit a model to measured input/output data and save it as a model file.");
+  command->add_option("model", options->model, "Model name (see 'hyst models')")->required();
+  command->add_option("--data", options->data, "Measured data: CSV, or a MATLAB .mat file")
+      ->required();
+  command->add_option("--input", options->input, "Input column (variable) of --data")->required();
+  command->add_option("--output", options->output, "Output column (variable) of --data")
+      ->required();
+  command->add_option("--out", options->out, "Model file to write (JSON)")->required();
+  auto* fraction = command->add_option(
+      "--validate-fraction", options->validate_fraction,
+      "Hold out the last fraction F (0 < F < 1) of the record for validation (never shuffled)");
+  auto* validation =
+      command->add_option("--validation-data", options->validation_data,
+                          "A separate record for validation (CSV or .mat), e.g. another amplitude");
+  command
+      ->add_option("--validation-input", options->validation_input,
+                   "Input column of --validation-data (default: --input)")
+      ->needs(validation);
+  command
+      ->add_option("--validation-output", options->validation_output,
+                   "Output column of --validation-data (default: --output)")
+      ->needs(validation);
+  fraction->excludes(validation);
+  command->add_option("--options", options->options_json,
+                      "Fit options as a JSON object, e.g. '{\"operators\": 12}'");
+  command
+      ->add_option("--option", options->option_pairs,
+                   "One fit option key=value (repeatable; the value is JSON if it parses, "
+                   "else a string); applied on top of --options")
+      ->allow_extra_args(false);
+  command->add_option("--report", options->report, "Also write the full fit report (text)");
+  command->footer(R"(Examples:
+  hyst fit pi --data d.csv --input v --output y --out m.json --validate-fraction 0.2
+  hyst fit pi --data MeasurementData.mat --input Vplus_19kv --output Displacement_19kv \
+      --validation-data MeasurementData.mat --validation-input Vplus_1kv \
+      --validation-output Displacement_1kv --option operators=12 \
+      --option initial_state=periodic --out pzt.json --report pzt.txt
+The model file's "info" object holds the fit report; 'hyst info m.json' shows it.
+'hyst models NAME' lists the fit options of a model.)");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace hyst::cli

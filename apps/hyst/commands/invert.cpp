@@ -1,0 +1,115 @@
+// hyst invert: the inputs that make a model file produce a target output (feedforward
+// compensation), within optional input limits.
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "../data_source.hpp"
+#include "commands.hpp"
+#include "hyst/io/csv.hpp"
+#include "hyst/registry/model_file.hpp"
+
+namespace hyst::cli {
+namespace {
+
+struct InvertOptions {
+  std::string model;
+  std::string target;
+  std::string column;
+  std::string out;
+  std::string input_column = "v";
+  double input_min = -std::numeric_limits<double>::infinity();
+  double input_max = std::numeric_limits<double>::infinity();
+};
+
+void run(const InvertOptions& options) {
+  if (std::isnan(options.input_min) || std::isnan(options.input_max) ||
+      !(options.input_min < options.input_max)) {
+    throw Error(fmt::format("--input-min {} must be less than --input-max {}", options.input_min,
+                            options.input_max));
+  }
+  const auto model = load_model(options.model);
+  if (!model->has_inverse()) {
+    // inverse() says why (e.g. which weight breaks invertibility).
+    try {
+      static_cast<void>(model->inverse({}));
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: the {} model has no inverse: {}", options.model, model->name(),
+                              error.what()));
+    }
+    throw Error(fmt::format("{}: the {} model has no inverse", options.model, model->name()));
+  }
+  std::unique_ptr<DynamicInverse> inverse;
+  try {
+    inverse = model->inverse({options.input_min, options.input_max});
+  } catch (const Error& error) {
+    throw Error(fmt::format("{}: {}", options.model, error.what()));
+  }
+
+  const DataSource source(options.target);
+  const auto column = source.choose(options.column, "y", "--column");
+  if (options.input_column == column) {
+    throw Error(fmt::format(
+        "--input-column '{}' is the name of the target column; choose another input name",
+        options.input_column));
+  }
+  check_output_folder(options.out, "--out");
+
+  auto target = source.column(column);
+  std::vector<double> input(target.size());
+  InverseReport report;
+  try {
+    report = inverse->invert(target, input);
+  } catch (const Error& error) {
+    throw Error(fmt::format("{} column '{}': {}", source.path().string(), column, error.what()));
+  }
+
+  io::Table table;
+  table.source = options.out;
+  table.add_column(column, std::move(target));
+  table.add_column(options.input_column, std::move(input));
+  io::write_csv(options.out, table);
+  fmt::print("wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
+             column, options.input_column);
+  if (!report.ok()) {
+    warn(fmt::format(
+        "{} of {} samples saturated at the input limits [{}, {}] (first at sample {}): the "
+        "model cannot reach those targets within the limits",
+        report.saturated_samples, table.rows(), options.input_min, options.input_max,
+        report.first_saturated));
+  }
+}
+
+}  // namespace
+
+void add_invert_command(CLI::App& app) {
+  auto options = std::make_shared<InvertOptions>();
+  auto* command = app.add_subcommand(
+      "invert",
+      "Compute the input that makes a model produce a target output (inverse compensation).");
+  command->add_option("--model", options->model, "Model file (JSON); must have an inverse")
+      ->required();
+  command->add_option("--target", options->target, "Target output data: CSV or .mat")->required();
+  command->add_option("--column", options->column,
+                      "Target column (default: the only column, else the column 'y')");
+  command->add_option("--out", options->out, "Output CSV: the target column and the input column")
+      ->required();
+  command->add_option("--input-column", options->input_column, "Name of the input column")
+      ->capture_default_str();
+  command->add_option("--input-min", options->input_min, "Lowest admissible input (default: none)");
+  command->add_option("--input-max", options->input_max,
+                      "Highest admissible input (default: none)");
+  command->footer(R"(Example:
+  hyst invert --model m.json --target y.csv --column y --out v.csv --input-min -10 --input-max 10
+      v.csv gets the columns y (the target) and v (the input). The inverse starts consistent
+      with the model file's state. Targets that need an input outside the limits get the
+      nearest limit, and a warning line says how many samples saturated and where the first is.)");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace hyst::cli

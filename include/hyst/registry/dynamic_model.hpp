@@ -1,0 +1,69 @@
+#pragma once
+//! \file
+//! The type-erased face of a model: what the command line, model files and Python use to choose
+//! a model at run time. It holds one concrete, non-virtual model together with its state; the
+//! virtual call happens once per batch (simulate), never per sample.
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "hyst/core/inverse_status.hpp"
+
+namespace hyst {
+
+//! Limits of the input an inverse may return (the actuator's admissible input range).
+struct InverseLimits {
+  double input_min = -std::numeric_limits<double>::infinity();
+  double input_max = std::numeric_limits<double>::infinity();
+};
+
+//! An inverse model with its state, started consistently with the model it was made from.
+class DynamicInverse {
+ public:
+  virtual ~DynamicInverse() = default;
+  //! Inputs that make the model produce `targets`; advances the state. Saturation is reported,
+  //! not thrown; hyst::Error for mismatched lengths or non-finite targets.
+  virtual InverseReport invert(std::span<const double> targets, std::span<double> inputs) = 0;
+  //! The inverse's own state as JSON (e.g. for `hyst info`).
+  virtual nlohmann::json state() const = 0;
+};
+
+class DynamicModel {
+ public:
+  virtual ~DynamicModel() = default;
+
+  //! Registry name, e.g. "pi".
+  virtual std::string_view name() const = 0;
+  virtual std::unique_ptr<DynamicModel> clone() const = 0;
+
+  //! Parameters and state in the model-file form (see model_file.hpp).
+  virtual nlohmann::json params() const = 0;
+  virtual nlohmann::json state() const = 0;
+  //! Replaces the state; throws hyst::Error naming the field ("state.play[2]: ...").
+  virtual void set_state(const nlohmann::json& state) = 0;
+  //! Back to the model's default initial state.
+  virtual void reset() = 0;
+
+  //! Runs the model over `input` from the current state (advanced); hyst::Error for mismatched
+  //! lengths or non-finite input samples.
+  virtual void simulate(std::span<const double> input, std::span<double> output) = 0;
+
+  //! Number of free parameters (for comparing models).
+  virtual std::size_t parameter_count() const = 0;
+  //! A few lines describing the model and its parameters, for people.
+  virtual std::string describe() const = 0;
+
+  //! True if inverse() is available for this model and parameter set.
+  virtual bool has_inverse() const = 0;
+  //! The inverse, started in the state consistent with this model's current state; throws
+  //! hyst::Error when the model has none or its parameters admit none.
+  virtual std::unique_ptr<DynamicInverse> inverse(const InverseLimits& limits) const = 0;
+};
+
+}  // namespace hyst

@@ -1,0 +1,88 @@
+#pragma once
+//! \file
+//! The registry of models: for each model its name, a one-line description, its parameter
+//! schema, construction from model-file JSON, and its fitter where it has one. Every model of the
+//! library is registered here, so that the command line, model files and Python all know it by
+//! the same name.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hyst/identify/fit_report.hpp"
+#include "hyst/registry/dynamic_model.hpp"
+
+namespace hyst {
+
+//! One entry of a model's parameter schema.
+struct ParameterInfo {
+  std::string name;         //!< field name in model files, e.g. "thresholds"
+  std::string type;         //!< "number", "array of numbers", ...
+  std::string unit;         //!< e.g. "input units"
+  std::string description;  //!< meaning and admissible range
+};
+
+//! What a fitter is given: one input/output record, how to validate, and model-specific options
+//! as JSON (the same names as the fields of the model's C++ options struct).
+//!
+//! Validation is either the last `validate_fraction` of the record (contiguous, never shuffled;
+//! predicted by continuing the simulation from the state at the end of the fit part) or a
+//! separate held-out record (validation_input/validation_output), never both.
+struct FitRequest {
+  std::span<const double> input;
+  std::span<const double> output;
+  double validate_fraction = 0.0;             //!< [0, 1)
+  std::span<const double> validation_input;   //!< empty: no held-out record
+  std::span<const double> validation_output;  //!< same length as validation_input
+  nlohmann::json options = nlohmann::json::object();
+};
+
+struct FitOutcome {
+  std::unique_ptr<DynamicModel> model;  //!< in the initial state used for fitting
+  FitReport report;
+};
+
+struct ModelEntry {
+  std::string name;
+  std::string description;  //!< one line
+  std::vector<ParameterInfo> parameters;
+  std::vector<ParameterInfo> fit_options;  //!< empty when the model has no fitter
+  //! Builds the model from the "params" and (optional, may be null) "state" objects of a model
+  //! file; hyst::Error messages name the field as "params.thresholds[3]: ...".
+  std::function<std::unique_ptr<DynamicModel>(const nlohmann::json& params,
+                                              const nlohmann::json* state)>
+      create;
+  //! Empty when the model has no fitter.
+  std::function<FitOutcome(const FitRequest&)> fit;
+  //! A small valid parameter set (for `hyst models --example`, tests and documentation).
+  nlohmann::json example_params;
+
+  bool can_fit() const { return static_cast<bool>(fit); }
+};
+
+class ModelRegistry {
+ public:
+  //! The registry with every built-in model.
+  static const ModelRegistry& builtin();
+
+  //! Throws hyst::Error "unknown model 'x' (known: pi, ...)".
+  const ModelEntry& find(std::string_view name) const;
+  const ModelEntry* find_if_known(std::string_view name) const;
+  const std::vector<ModelEntry>& entries() const { return entries_; }
+  //! Comma-separated names.
+  std::string names() const;
+
+  //! Adds an entry; throws hyst::Error if the name is taken.
+  void add(ModelEntry entry);
+
+ private:
+  std::vector<ModelEntry> entries_;
+};
+
+}  // namespace hyst

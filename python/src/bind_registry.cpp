@@ -1,0 +1,218 @@
+// The model registry: any model by name, with parameters and state as Python dicts (JSON), model
+// files, and fitting through the registry.
+
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "bindings.hpp"
+#include "hyst/core/error.hpp"
+#include "hyst/registry/dynamic_model.hpp"
+#include "hyst/registry/model_file.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst::python {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+const ModelRegistry& registry() {
+  return ModelRegistry::builtin();
+}
+
+std::unique_ptr<DynamicModel> create_model(const std::string& name, const py::handle& params,
+                                           const py::handle& state) {
+  const auto& entry = registry().find(name);
+  const auto params_json = python_to_json(params, "params");
+  if (state.is_none()) return entry.create(params_json, nullptr);
+  const auto state_json = python_to_json(state, "state");
+  return entry.create(params_json, &state_json);
+}
+
+nlohmann::json info_json(const py::handle& info) {
+  if (info.is_none()) return nlohmann::json::object();
+  auto json = python_to_json(info, "info");
+  if (!json.is_object()) throw Error("info must be a dict");
+  return json;
+}
+
+}  // namespace
+
+void bind_registry(py::module_& module) {
+  py::class_<ParameterInfo>(module, "ParameterInfo", "One entry of a model's parameter schema.")
+      .def_readonly("name", &ParameterInfo::name)
+      .def_readonly("type", &ParameterInfo::type)
+      .def_readonly("unit", &ParameterInfo::unit)
+      .def_readonly("description", &ParameterInfo::description)
+      .def("__repr__", [](const ParameterInfo& p) {
+        return fmt::format("ParameterInfo(name='{}', type='{}', unit='{}')", p.name, p.type,
+                           p.unit);
+      });
+
+  py::class_<ModelEntry>(module, "ModelEntry", "A registered model: see hyst.models().")
+      .def_readonly("name", &ModelEntry::name)
+      .def_readonly("description", &ModelEntry::description)
+      .def_readonly("parameters", &ModelEntry::parameters)
+      .def_readonly("fit_options", &ModelEntry::fit_options)
+      .def_property_readonly("can_fit", &ModelEntry::can_fit, "True when hyst.fit() can fit it.")
+      .def_property_readonly(
+          "example_params", [](const ModelEntry& e) { return json_to_python(e.example_params); },
+          "A small valid parameter set, as a dict.")
+      .def("__repr__", [](const ModelEntry& e) {
+        return fmt::format("ModelEntry(name='{}', can_fit={}, description='{}')", e.name,
+                           e.can_fit() ? "True" : "False", e.description);
+      });
+
+  module.def(
+      "models",
+      [] {
+        py::list entries;
+        for (const auto& entry : registry().entries())
+          entries.append(py::cast(&entry, py::return_value_policy::reference));
+        return entries;
+      },
+      "Every registered model (ModelEntry: name, description, parameters, can_fit, "
+      "example_params).");
+  module.def(
+      "model_entry", [](std::string_view name) { return &registry().find(name); }, "name"_a,
+      py::return_value_policy::reference, "The registry entry of a model; hyst.Error if unknown.");
+
+  py::class_<DynamicInverse>(module, "Inverse",
+                             "The inverse of a hyst.Model with its own running state (see "
+                             "Model.inverse()).")
+      .def(
+          "invert",
+          [](DynamicInverse& inverse, const InputArray& targets) {
+            const auto samples = as_span(targets, "targets");
+            std::vector<double> inputs(samples.size());
+            InverseReport report;
+            {
+              py::gil_scoped_release release;
+              report = inverse.invert(samples, inputs);
+            }
+            return py::make_tuple(to_array(std::move(inputs)), report);
+          },
+          "targets"_a,
+          "Inputs that make the model produce `targets` (the state advances): returns (inputs, "
+          "InverseReport); saturation is reported, not raised.")
+      .def_property_readonly(
+          "state", [](const DynamicInverse& inverse) { return json_to_python(inverse.state()); });
+
+  py::class_<DynamicModel> model(
+      module, "Model",
+      "Any registered model with its running state, chosen by name at run time. Parameters and "
+      "state are dicts in the model-file form, e.g. Model('pi', {'thresholds': [0, 0.3], "
+      "'weights': [1, 0.5]}).");
+  model
+      .def(py::init(&create_model), "name"_a, "params"_a, "state"_a = py::none(),
+           "Builds a registered model; hyst.Error names a bad field (\"params.thresholds[1]: "
+           "...\").")
+      .def_property_readonly("name", [](const DynamicModel& m) { return std::string(m.name()); })
+      .def_property_readonly(
+          "params", [](const DynamicModel& m) { return json_to_python(m.params()); },
+          "The parameters as a dict (a copy).")
+      .def_property(
+          "state", [](const DynamicModel& m) { return json_to_python(m.state()); },
+          [](DynamicModel& m, const py::handle& state) {
+            m.set_state(python_to_json(state, "state"));
+          },
+          "The running state as a dict; assigning validates it.")
+      .def("reset", &DynamicModel::reset, "Back to the model's default initial state.")
+      .def(
+          "simulate",
+          [](DynamicModel& m, const InputArray& input) {
+            const auto samples = as_span(input, "input");
+            std::vector<double> output(samples.size());
+            {
+              py::gil_scoped_release release;
+              m.simulate(samples, output);
+            }
+            return to_array(std::move(output));
+          },
+          "input"_a, "Runs the model from its current state (advanced); returns the outputs.")
+      .def("parameter_count", &DynamicModel::parameter_count)
+      .def("describe", &DynamicModel::describe, "A few lines on the model and its parameters.")
+      .def("has_inverse", &DynamicModel::has_inverse)
+      .def(
+          "inverse",
+          [](const DynamicModel& m, double input_min, double input_max) {
+            return m.inverse({input_min, input_max});
+          },
+          "input_min"_a = -kInfinity, "input_max"_a = kInfinity,
+          "The inverse, started consistently with the model's current state.")
+      .def(
+          "to_dict",
+          [](const DynamicModel& m, const py::object& info) {
+            return json_to_python(model_to_json(m, info_json(info)));
+          },
+          "info"_a = py::none(), "The model-file document as a dict.")
+      .def("__copy__", &DynamicModel::clone)
+      .def(
+          "__deepcopy__", [](const DynamicModel& m, py::dict) { return m.clone(); }, "memo"_a)
+      .def("__repr__", [](const DynamicModel& m) {
+        return fmt::format("hyst.Model('{}', params={}, state={})", m.name(), m.params().dump(),
+                           m.state().dump());
+      });
+
+  module.def(
+      "model_from_dict",
+      [](const py::handle& document, std::string_view source) {
+        return model_from_json(python_to_json(document, ""), source);
+      },
+      "document"_a, "source"_a = "<dict>",
+      "A Model from a model-file document {'model': ..., 'version': 1, 'params': {...}, "
+      "'state': {...}}.");
+  module.def(
+      "model_to_dict",
+      [](const DynamicModel& m, const py::object& info) {
+        return json_to_python(model_to_json(m, info_json(info)));
+      },
+      "model"_a, "info"_a = py::none(), "The model-file document of a model in its current state.");
+  module.def(
+      "load_model", [](const std::filesystem::path& path) { return load_model(path); }, "path"_a,
+      "Reads and validates a model file (JSON); hyst.Error names the file and the field.");
+  module.def(
+      "save_model",
+      [](const std::filesystem::path& path, const DynamicModel& m, const py::object& info) {
+        save_model(path, m, info_json(info));
+      },
+      "path"_a, "model"_a, "info"_a = py::none(),
+      "Writes a model file atomically; `info` (a dict, e.g. the fit report) is stored as given.");
+
+  module.def(
+      "fit",
+      [](const std::string& name, const InputArray& input, const InputArray& output,
+         const std::optional<InputArray>& validation_input,
+         const std::optional<InputArray>& validation_output, const py::kwargs& options) {
+        const auto& entry = registry().find(name);
+        if (!entry.can_fit()) {
+          throw Error(fmt::format("model '{}' has no fitter", name));
+        }
+        if (validation_input.has_value() != validation_output.has_value()) {
+          throw Error("validation_input and validation_output must be given together");
+        }
+        FitRequest request;
+        request.input = as_span(input, "input");
+        request.output = as_span(output, "output");
+        if (validation_input) {
+          request.validation_input = as_span(*validation_input, "validation_input");
+          request.validation_output = as_span(*validation_output, "validation_output");
+        }
+        request.options = python_to_json(options, "");
+        std::optional<FitOutcome> outcome;
+        {
+          py::gil_scoped_release release;
+          outcome.emplace(entry.fit(request));
+        }
+        return py::make_tuple(std::move(outcome->model), std::move(outcome->report));
+      },
+      "name"_a, "input"_a, "output"_a, "validation_input"_a = py::none(),
+      "validation_output"_a = py::none(),
+      "Fits a registered model by name: returns (Model, FitReport). Keyword options are the "
+      "model's fit options (see ModelEntry.fit_options), e.g. operators=20, "
+      "initial_state=\"periodic\".");
+}
+
+}  // namespace hyst::python

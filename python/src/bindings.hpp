@@ -1,0 +1,53 @@
+#pragma once
+// Shared helpers of the Python module `hyst`: numpy conversion without copies where possible,
+// JSON <-> Python objects, and one bind_* function per area of the library.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <nlohmann/json.hpp>
+
+namespace hyst::python {
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+//! Any 1-D sequence of numbers: a float64 C-contiguous numpy array is used in place, anything
+//! else (lists, other dtypes, strided views) is converted once by numpy.
+using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+//! The samples of a one-dimensional array; throws hyst::Error naming `name` for other shapes.
+std::span<const double> as_span(const InputArray& array, std::string_view name);
+//! The samples copied into a vector (for parameters, which the models keep).
+std::vector<double> as_vector(const InputArray& array, std::string_view name);
+
+//! A writeable float64 array that takes over the vector's memory (no copy); a capsule frees it.
+py::array_t<double> to_array(std::vector<double>&& values);
+//! A read-only float64 view of memory owned by `owner` (kept alive by the array).
+py::array_t<double> readonly_view(std::span<const double> values, py::handle owner);
+//! A read-only float64 copy: a snapshot that cannot be mistaken for a handle to live state.
+py::array_t<double> readonly_copy(std::span<const double> values);
+
+//! "[0, 0.3, 0.7]", shortened to the first and last values for long sequences.
+std::string format_list(std::span<const double> values);
+
+//! JSON -> dict / list / float / int / str / bool / None.
+py::object json_to_python(const nlohmann::json& value);
+//! The reverse (also numpy arrays and scalars); throws hyst::Error naming `path` for anything
+//! JSON cannot hold.
+nlohmann::json python_to_json(py::handle value, const std::string& path);
+
+void bind_operators(py::module_& module);
+void bind_models(py::module_& module);
+void bind_signals(py::module_& module);
+void bind_io(py::module_& module);
+void bind_identify(py::module_& module);
+void bind_registry(py::module_& module);
+
+}  // namespace hyst::python

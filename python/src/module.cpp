@@ -1,0 +1,176 @@
+// The Python module `hyst`: the library's models, inverses, signals, file formats, fitters and
+// model registry, with numpy arrays in and out. See python/tests for the whole API in use.
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "bindings.hpp"
+#include "hyst/core/error.hpp"
+
+#ifndef HYST_VERSION
+#define HYST_VERSION "unknown"
+#endif
+
+namespace hyst::python {
+
+std::span<const double> as_span(const InputArray& array, std::string_view name) {
+  if (array.ndim() != 1) {
+    throw Error(
+        fmt::format("{} must be a one-dimensional array, got {} dimensions", name, array.ndim()));
+  }
+  return {array.data(), static_cast<std::size_t>(array.shape(0))};
+}
+
+std::vector<double> as_vector(const InputArray& array, std::string_view name) {
+  const auto values = as_span(array, name);
+  return {values.begin(), values.end()};
+}
+
+py::array_t<double> to_array(std::vector<double>&& values) {
+  auto owned = std::make_unique<std::vector<double>>(std::move(values));
+  const auto size = static_cast<py::ssize_t>(owned->size());
+  const double* data = owned->data();
+  py::capsule owner(owned.get(),
+                    [](void* pointer) { delete static_cast<std::vector<double>*>(pointer); });
+  owned.release();  // the capsule owns it now
+  return py::array_t<double>({size}, {static_cast<py::ssize_t>(sizeof(double))}, data, owner);
+}
+
+py::array_t<double> readonly_view(std::span<const double> values, py::handle owner) {
+  py::array_t<double> array({static_cast<py::ssize_t>(values.size())},
+                            {static_cast<py::ssize_t>(sizeof(double))}, values.data(), owner);
+  array.attr("setflags")("write"_a = false);
+  return array;
+}
+
+py::array_t<double> readonly_copy(std::span<const double> values) {
+  py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  array.attr("setflags")("write"_a = false);
+  return array;
+}
+
+std::string format_list(std::span<const double> values) {
+  constexpr std::size_t kShown = 8;
+  std::string text = "[";
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (values.size() > kShown && k == kShown - 2) {
+      text += fmt::format(", ..., {}", values.back());
+      break;
+    }
+    text += fmt::format("{}{}", k ? ", " : "", values[k]);
+  }
+  return text + "]";
+}
+
+py::object json_to_python(const nlohmann::json& value) {
+  using Type = nlohmann::json::value_t;
+  switch (value.type()) {
+    case Type::boolean:
+      return py::bool_(value.get<bool>());
+    case Type::number_integer:
+      return py::int_(value.get<std::int64_t>());
+    case Type::number_unsigned:
+      return py::int_(value.get<std::uint64_t>());
+    case Type::number_float:
+      return py::float_(value.get<double>());
+    case Type::string:
+      return py::str(value.get_ref<const std::string&>());
+    case Type::array: {
+      py::list list;
+      for (const auto& item : value)
+        list.append(json_to_python(item));
+      return list;
+    }
+    case Type::object: {
+      py::dict dict;
+      for (const auto& [key, item] : value.items())
+        dict[py::str(key)] = json_to_python(item);
+      return dict;
+    }
+    default:  // null, binary, discarded
+      return py::none();
+  }
+}
+
+nlohmann::json python_to_json(py::handle value, const std::string& path) {
+  if (value.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) {
+    try {
+      return value.cast<std::int64_t>();
+    } catch (const py::cast_error&) {
+      return value.cast<std::uint64_t>();
+    }
+  }
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::array>(value)) return python_to_json(value.attr("tolist")(), path);
+  if (py::isinstance<py::dict>(value)) {
+    auto object = nlohmann::json::object();
+    for (const auto& [key, item] : value.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(key)) {
+        throw Error(fmt::format("{}: key {} is not a string", path.empty() ? "<dict>" : path,
+                                py::repr(key).cast<std::string>()));
+      }
+      const auto name = key.cast<std::string>();
+      object[name] = python_to_json(item, path.empty() ? name : path + "." + name);
+    }
+    return object;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    auto array = nlohmann::json::array();
+    std::size_t index = 0;
+    for (const auto& item : value)
+      array.push_back(python_to_json(item, fmt::format("{}[{}]", path, index++)));
+    return array;
+  }
+  if (py::isinstance(value, py::module_::import("numpy").attr("generic"))) {
+    return python_to_json(value.attr("item")(), path);  // numpy scalar
+  }
+  throw Error(fmt::format("{}: a {} cannot be stored as JSON", path.empty() ? "<value>" : path,
+                          py::type::of(value).attr("__name__").cast<std::string>()));
+}
+
+}  // namespace hyst::python
+
+PYBIND11_MODULE(hyst, module) {
+  namespace py = pybind11;
+  module.doc() =
+      "hyst: hysteresis models (relay, play, stop, Prandtl-Ishlinskii), their inverses, test "
+      "signals, CSV and MAT files, identification and the model registry.\n\n"
+      "Invalid input (parameters, files, NaN samples) raises hyst.Error; numpy float64 arrays "
+      "are used in place, and returned arrays own their memory (no copies).";
+  module.attr("__version__") = HYST_VERSION;
+
+  // hyst::Error -> hyst.Error (an Exception) with the message, and the offending parameter field
+  // (e.g. "thresholds[3]") as `.field`, None when the error is not about one field.
+  static PyObject* error_type =
+      PyErr_NewExceptionWithDoc("hyst.Error",
+                                "Invalid user input: parameters, files or data. The message names "
+                                "the quantity, index and value; .field names the parameter.",
+                                PyExc_Exception, nullptr);
+  if (!error_type) throw py::error_already_set();
+  module.add_object("Error", py::handle(error_type));
+  py::register_exception_translator([](std::exception_ptr pointer) {
+    try {
+      if (pointer) std::rethrow_exception(pointer);
+    } catch (const hyst::Error& error) {
+      py::object instance = py::reinterpret_borrow<py::object>(error_type)(error.what());
+      instance.attr("field") =
+          error.field().empty() ? py::object(py::none()) : py::object(py::str(error.field()));
+      PyErr_SetObject(error_type, instance.ptr());
+    }
+  });
+
+  hyst::python::bind_operators(module);
+  hyst::python::bind_models(module);
+  hyst::python::bind_signals(module);
+  hyst::python::bind_io(module);
+  hyst::python::bind_identify(module);
+  hyst::python::bind_registry(module);
+}

@@ -1,0 +1,152 @@
+"""The model registry from Python: the registry walk, model files, dict forms and hyst.fit."""
+
+import copy
+import json
+
+import numpy as np
+import pytest
+
+import hyst
+
+PI_PARAMS = {"thresholds": [0.0, 0.3], "weights": [1.0, 0.5], "offset": 0.1}
+
+
+def probe_input() -> np.ndarray:
+    grid = hyst.signals.TimeGrid(600, 1e-3)
+    return hyst.signals.generate(
+        grid, hyst.signals.DecayingSine(amplitude=1.5, frequency=4.0, time_constant=0.3))
+
+
+def test_models_lists_the_registry():
+    entries = hyst.models()
+    assert [e.name for e in entries][0] == "pi"
+    for entry in entries:
+        assert entry.name and entry.description
+        assert isinstance(entry.can_fit, bool)
+        assert all(p.name and p.type for p in entry.parameters)
+        assert isinstance(entry.example_params, dict)
+        assert repr(entry).startswith(f"ModelEntry(name='{entry.name}'")
+    pi = hyst.model_entry("pi")
+    assert pi.can_fit and {p.name for p in pi.parameters} == {"thresholds", "weights", "offset"}
+    assert "operators" in {o.name for o in pi.fit_options}
+    assert "ParameterInfo(name=" in repr(pi.parameters[0])
+    assert all(p.unit is not None and p.description for p in pi.parameters)
+    with pytest.raises(hyst.Error, match="unknown model 'nope' \\(known: pi"):
+        hyst.model_entry("nope")
+
+
+@pytest.mark.parametrize("entry", hyst.models(), ids=lambda e: e.name)
+def test_registry_walk(entry, tmp_path):
+    """Every registered model: built from its example, simulated, saved, loaded, same output."""
+    model = hyst.Model(entry.name, entry.example_params)
+    assert model.name == entry.name
+    v = probe_input()
+    first = model.simulate(v[:300])
+    assert first.shape == (300,) and np.all(np.isfinite(first))
+
+    # Saved in mid-run state: the loaded model continues exactly where this one does.
+    path = tmp_path / f"{entry.name}.json"
+    hyst.save_model(path, model, info={"test": "registry walk"})
+    loaded = hyst.load_model(path)
+    assert loaded.name == entry.name and loaded.params == model.params
+    assert loaded.state == model.state
+    np.testing.assert_array_equal(loaded.simulate(v[300:]), model.simulate(v[300:]))
+
+    # From the start, through the dict form.
+    model.reset()
+    twin = hyst.model_from_dict(hyst.model_to_dict(model))
+    np.testing.assert_array_equal(twin.simulate(v), model.simulate(v))
+    assert json.loads(path.read_text())["info"] == {"test": "registry walk"}
+
+    if model.has_inverse():
+        model.reset()
+        inverse = model.inverse()
+        targets = model.simulate(v)
+        model.reset()
+        inputs, report = model.inverse().invert(targets)
+        assert report.ok
+        np.testing.assert_allclose(model.simulate(inputs), targets, rtol=0, atol=1e-12)
+        assert isinstance(inverse, hyst.Inverse) and isinstance(inverse.state, dict)
+
+
+def test_model_params_state_and_copies():
+    model = hyst.Model("pi", PI_PARAMS)
+    assert model.params == PI_PARAMS
+    assert model.state == {"play": [0.0, 0.0]}
+    np.testing.assert_allclose(model.simulate([0.5, 1.0]), [0.7, 1.45], atol=1e-15)
+    assert model.state == pytest.approx({"play": [1.0, 0.7]})
+    saved = copy.copy(model)
+    model.simulate([0.6, 0.2, -1.0])
+    np.testing.assert_allclose(saved.simulate([0.6, 0.2, -1.0]), [1.05, 0.55, -1.25], atol=1e-15)
+    model.state = {"play": np.array([0.5, 0.3])}
+    assert model.state == {"play": [0.5, 0.3]}
+    model.reset()
+    assert model.state == {"play": [0.0, 0.0]}
+    assert copy.deepcopy(model).params == PI_PARAMS
+    assert model.parameter_count() == 3  # two weights and the offset
+    assert "Prandtl-Ishlinskii" in model.describe()
+    assert repr(model).startswith("hyst.Model('pi', params={")
+    started = hyst.Model("pi", PI_PARAMS, state={"play": [0.2, 0.2]})
+    assert started.state == {"play": [0.2, 0.2]}
+    document = model.to_dict(info={"note": "x"})
+    assert document["model"] == "pi" and document["version"] == 1
+    assert document["info"] == {"note": "x"}
+
+
+def test_inverse_from_the_current_state_with_limits():
+    model = hyst.Model("pi", PI_PARAMS)
+    model.simulate([0.8, -0.2])
+    inverse = model.inverse(input_min=-1.0, input_max=1.0)
+    inputs, report = inverse.invert([0.5, 5.0])
+    assert report.saturated_samples == 1 and report.first_saturated == 1
+    assert inputs[1] == 1.0
+    np.testing.assert_allclose(model.simulate(inputs[:1]), [0.5], atol=1e-12)
+    with pytest.raises(hyst.Error):
+        hyst.Model("pi", {"thresholds": [0, 1], "weights": [1, -2]}).inverse()
+
+
+def test_bad_models_raise_hyst_error_naming_the_field(tmp_path):
+    with pytest.raises(hyst.Error, match=r"params.thresholds\[1\]: PI threshold r\[1\] = -0.2"):
+        hyst.Model("pi", {"thresholds": [0, -0.2], "weights": [1, 1]})
+    with pytest.raises(hyst.Error, match="params"):
+        hyst.Model("pi", {"thresholds": [0], "weights": [1], "colour": "red"})
+    with pytest.raises(hyst.Error, match="unknown model"):
+        hyst.Model("nope", {})
+    with pytest.raises(hyst.Error, match="state"):
+        hyst.Model("pi", PI_PARAMS).state = {"play": [0.0, 5.0]}
+    with pytest.raises(hyst.Error, match="cannot be stored as JSON"):
+        hyst.Model("pi", {"thresholds": [0], "weights": [object()]})
+    with pytest.raises(hyst.Error, match=r"input\[1\] = nan is not finite"):
+        hyst.Model("pi", PI_PARAMS).simulate([0.0, np.nan])
+
+    path = tmp_path / "broken.json"
+    path.write_text('{"model": "pi", "version": 1, "params": {"thresholds": [0, 0.3]')
+    with pytest.raises(hyst.Error, match="broken.json: not valid JSON"):
+        hyst.load_model(path)
+    path.write_text(json.dumps({"model": "pi", "version": 2, "params": PI_PARAMS}))
+    with pytest.raises(hyst.Error, match="broken.json: version: 2 is not supported"):
+        hyst.load_model(path)
+    path.write_text(json.dumps({"model": "pi", "version": 1,
+                                "params": {"thresholds": [0, 0.3, 0.2], "weights": [1, 1, 1]}}))
+    with pytest.raises(hyst.Error, match=r"broken.json: params.thresholds\[2\]"):
+        hyst.load_model(path)
+    with pytest.raises(hyst.Error, match="cannot open"):
+        hyst.load_model(tmp_path / "missing.json")
+    with pytest.raises(hyst.Error, match="<dict>: "):
+        hyst.model_from_dict({"model": "pi", "params": PI_PARAMS})
+
+
+def test_fit_through_the_registry(nested_loops):
+    truth = hyst.PrandtlIshlinskii([0.0, 0.5, 1.0], [1.0, 0.5, 0.25], offset=-0.2)
+    y = truth.simulate(nested_loops)
+    model, report = hyst.fit("pi", nested_loops, y, thresholds=[0.0, 0.5, 1.0])
+    assert isinstance(model, hyst.Model) and isinstance(report, hyst.FitReport)
+    np.testing.assert_allclose(model.params["weights"], [1.0, 0.5, 0.25], atol=1e-8)
+    np.testing.assert_allclose(model.simulate(nested_loops), y, atol=1e-8)
+    _, report = hyst.fit("pi", nested_loops[:1500], y[:1500], nested_loops, y, operators=np.int64(6),
+                         initial_state="virgin", fit_offset=True)
+    assert report.validation is not None
+    with pytest.raises(hyst.Error, match="colour"):
+        hyst.fit("pi", nested_loops, y, colour="red")
+    with pytest.raises(hyst.Error, match="given together"):
+        hyst.fit("pi", nested_loops, y, validation_output=y)

@@ -1,0 +1,225 @@
+// Registry entry of the generalized Prandtl-Ishlinskii model (GPI): its model-file form, its
+// inverse (IGPI) and its fitter. The envelope kind is a template parameter of the model; the
+// entry picks the instantiation from the "envelope" field at load time.
+
+#include <fmt/format.h>
+
+#include "hyst/identify/fit_generalized_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp"
+#include "hyst/models/generalized_prandtl_ishlinskii.hpp"
+#include "model_adapter.hpp"
+#include "model_entries.hpp"
+
+namespace hyst::detail {
+namespace {
+
+template <class E>
+struct GpiCodec {
+  using Model = GeneralizedPrandtlIshlinskii<E>;
+  using Inverse = InverseGeneralizedPrandtlIshlinskii<E>;
+  static constexpr std::string_view name = "gpi";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    nlohmann::json json = {{"envelope", std::string(to_string(p.envelope))},
+                           {"ascending", p.ascending},
+                           {"descending", p.descending},
+                           {"density", std::string(to_string(p.density))}};
+    if (p.density == GpiDensity::exponential) {
+      json["rho"] = p.rho;
+      json["tau"] = p.tau;
+      json["alpha"] = p.alpha;
+      json["m"] = p.m;
+    } else {
+      json["thresholds"] = p.thresholds;
+      json["weights"] = p.weights;
+    }
+    json["input_min"] = p.input_min;
+    json["input_max"] = p.input_max;
+    json["initial_input"] = p.initial_input;
+    return json;
+  }
+  static nlohmann::json state_to_json(const Model&, const typename Model::State& state) {
+    return {{"play", state.play}};
+  }
+  static typename Model::State state_from_json(const Model& model, JsonFields& fields) {
+    auto play = fields.numbers("play");
+    try {
+      return model.make_state(std::move(play));
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", fields.path_of("play"), error.what()));
+    }
+  }
+  static std::size_t parameter_count(const Model& model) {
+    const auto& p = model.params();
+    const std::size_t envelope = p.ascending.size() + p.descending.size();
+    return envelope + (p.density == GpiDensity::exponential ? 3 : 2 * model.size());
+  }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    std::string text = fmt::format(
+        "generalized Prandtl-Ishlinskii model: {} envelopes, {} density, {} operators, input "
+        "range [{}, {}]\n",
+        to_string(p.envelope), to_string(p.density), model.size(), p.input_min, p.input_max);
+    text += fmt::format("  ascending envelope gamma_l coefficients:  {}\n",
+                        fmt::join(p.ascending, ", "));
+    text += fmt::format("  descending envelope gamma_r coefficients: {}\n",
+                        fmt::join(p.descending, ", "));
+    text += "   j   threshold r_j      weight p_j\n";
+    for (std::size_t j = 0; j < model.size(); ++j) {
+      text +=
+          fmt::format("{:4}  {:14.8g}  {:14.8g}\n", j, model.thresholds()[j], model.weights()[j]);
+    }
+    return text;
+  }
+  static bool has_inverse(const Model&) { return true; }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model,
+                                                      const typename Model::State& state,
+                                                      const InverseLimits& limits) {
+    Inverse inverse(model, {limits.input_min, limits.input_max});
+    auto inverse_state = inverse.state_consistent_with(state);
+    const auto state_to_json = [](const typename Inverse::State& s) {
+      return nlohmann::json{
+          {"play", s.pi.play},
+          {"envelope_value", s.u},
+          {"branch", s.branch == LoopBranch::ascending ? "ascending" : "descending"}};
+    };
+    return std::make_unique<InverseAdapter<Inverse, decltype(state_to_json)>>(
+        std::move(inverse), std::move(inverse_state), state_to_json);
+  }
+};
+
+GpiParams params_from_json(JsonFields& fields) {
+  GpiParams params;
+  const auto read_kind = [&](std::string_view key, auto parse) {
+    const auto text = fields.string(key);
+    try {
+      return parse(text);
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", fields.path_of(key), error.what()));
+    }
+  };
+  params.envelope = read_kind("envelope", envelope_kind_from_string);
+  params.ascending = fields.numbers("ascending");
+  params.descending = fields.numbers("descending");
+  params.density = read_kind("density", gpi_density_from_string);
+  if (params.density == GpiDensity::exponential) {
+    params.rho = fields.number("rho");
+    params.tau = fields.number("tau");
+    params.alpha = fields.number("alpha");
+    params.m = fields.count("m");
+  } else {
+    params.thresholds = fields.numbers("thresholds");
+    params.weights = fields.numbers("weights");
+  }
+  params.input_min = fields.number("input_min");
+  params.input_max = fields.number("input_max");
+  params.initial_input = fields.number_or("initial_input", 0.0);
+  return params;
+}
+
+template <class E>
+std::unique_ptr<DynamicModel> make_adapter(GeneralizedPrandtlIshlinskii<E> model,
+                                           const nlohmann::json* state_json) {
+  auto adapter = std::make_unique<ModelAdapter<GpiCodec<E>>>(model, model.initial_state());
+  if (state_json) adapter->set_state(*state_json);
+  return adapter;
+}
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  auto params = params_from_json(fields);
+  fields.finish();
+  return visit_envelope(params.envelope, [&]<class E>(E) -> std::unique_ptr<DynamicModel> {
+    std::optional<GeneralizedPrandtlIshlinskii<E>> model;
+    try {
+      model.emplace(params);
+    } catch (const Error& error) {
+      rethrow_at(error, "params");
+    }
+    return make_adapter(std::move(*model), state_json);
+  });
+}
+
+GpiFitOptions fit_options_from_json(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  GpiFitOptions options;
+  options.m = fields.count_or("m", options.m);
+  if (fields.has("initial_state")) {
+    const auto text = fields.string("initial_state");
+    try {
+      options.initial_state = gpi_initial_state_from_string(text);
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", fields.path_of("initial_state"), error.what()));
+    }
+  }
+  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
+  if (fields.has("input_min")) options.input_min = fields.number("input_min");
+  if (fields.has("input_max")) options.input_max = fields.number("input_max");
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  return options;
+}
+
+FitOutcome fit(const FitRequest& request) {
+  const auto options = fit_options_from_json(request);
+  auto result = request.validation_input.empty()
+                    ? fit_generalized_prandtl_ishlinskii(request.input, request.output, options)
+                    : fit_generalized_prandtl_ishlinskii(request.input, request.output,
+                                                         request.validation_input,
+                                                         request.validation_output, options);
+  return {
+      std::make_unique<ModelAdapter<GpiCodec<TanhEnvelope>>>(result.model, result.initial_state),
+      std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry generalized_prandtl_ishlinskii_entry() {
+  ModelEntry entry;
+  entry.name = "gpi";
+  entry.description =
+      "generalized Prandtl-Ishlinskii (MSMA): plays on tanh/arctan/linear envelopes, exponential "
+      "density; analytic inverse (IGPI); nonlinear fit (Ceres)";
+  entry.parameters = {
+      {"envelope", "string", "", "tanh, arctan or linear"},
+      {"ascending", "array of numbers", "",
+       "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)"},
+      {"descending", "array of numbers", "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r"},
+      {"density", "string", "", "exponential (rho, tau, alpha, m) or free (thresholds, weights)"},
+      {"rho", "number", "", "exponential density p_j = rho exp(-tau r_j), rho > 0"},
+      {"tau", "number", "1 / envelope units", "decay of the density"},
+      {"alpha", "number", "envelope units", "threshold spacing r_j = alpha j, alpha > 0"},
+      {"m", "whole number", "", "operators j = 0..m"},
+      {"thresholds", "array of numbers", "envelope units", "free density: 0 = r_0 < r_1 < ..."},
+      {"weights", "array of numbers", "", "free density: p_j"},
+      {"input_min", "number", "input units", "operating range (ordering checked on it)"},
+      {"input_max", "number", "input units", "operating range"},
+      {"initial_input", "number", "input units", "at rest there initially (default 0)"},
+  };
+  entry.fit_options = {
+      {"m", "whole number", "", "operators j = 0..m (10)"},
+      {"initial_state", "string", "", "rest (at the first input, rising) or periodic"},
+      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations per start (200)"},
+      {"input_min", "number", "input units", "operating range (default: the data's)"},
+      {"input_max", "number", "input units", "operating range (default: the data's)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  // The parameter set of the reference checks (pi_check.py).
+  entry.example_params = {{"envelope", "tanh"},
+                          {"ascending", {2.0, 0.8, -0.1, 0.05}},
+                          {"descending", {2.0, 0.8, 0.25, 0.05}},
+                          {"density", "exponential"},
+                          {"rho", 0.6},
+                          {"tau", 0.9},
+                          {"alpha", 0.12},
+                          {"m", 8},
+                          {"input_min", -3.0},
+                          {"input_max", 3.0},
+                          {"initial_input", 0.0}};
+  return entry;
+}
+
+}  // namespace hyst::detail

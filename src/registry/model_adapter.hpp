@@ -1,0 +1,88 @@
+#pragma once
+// DynamicModel and DynamicInverse for any concrete model, given a codec that knows the model's
+// JSON form:
+//
+//   struct Codec {
+//     using Model = ...;
+//     static constexpr std::string_view name = "...";
+//     static nlohmann::json params_to_json(const Model&);
+//     static nlohmann::json state_to_json(const Model&, const typename Model::State&);
+//     static typename Model::State state_from_json(const Model&, detail::JsonFields&);
+//     static std::size_t parameter_count(const Model&);
+//     static std::string describe(const Model&);
+//     static bool has_inverse(const Model&);
+//     static std::unique_ptr<DynamicInverse> make_inverse(const Model&,
+//                                                         const typename Model::State&,
+//                                                         const InverseLimits&);
+//   };
+
+#include <memory>
+#include <utility>
+
+#include "../detail/json_fields.hpp"
+#include "hyst/core/invert.hpp"
+#include "hyst/core/simulate.hpp"
+#include "hyst/registry/dynamic_model.hpp"
+
+namespace hyst::detail {
+
+template <class Codec>
+class ModelAdapter final : public DynamicModel {
+ public:
+  using Model = typename Codec::Model;
+  using State = typename Model::State;
+
+  ModelAdapter(Model model, State state) : model_(std::move(model)), state_(std::move(state)) {}
+
+  std::string_view name() const override { return Codec::name; }
+  std::unique_ptr<DynamicModel> clone() const override {
+    return std::make_unique<ModelAdapter>(*this);
+  }
+  nlohmann::json params() const override { return Codec::params_to_json(model_); }
+  nlohmann::json state() const override { return Codec::state_to_json(model_, state_); }
+  void set_state(const nlohmann::json& state) override {
+    JsonFields fields(state, "state");
+    auto new_state = Codec::state_from_json(model_, fields);
+    fields.finish();
+    state_ = std::move(new_state);
+  }
+  void reset() override { state_ = model_.initial_state(); }
+  void simulate(std::span<const double> input, std::span<double> output) override {
+    hyst::simulate(model_, state_, input, output);
+  }
+  std::size_t parameter_count() const override { return Codec::parameter_count(model_); }
+  std::string describe() const override { return Codec::describe(model_); }
+  bool has_inverse() const override { return Codec::has_inverse(model_); }
+  std::unique_ptr<DynamicInverse> inverse(const InverseLimits& limits) const override {
+    return Codec::make_inverse(model_, state_, limits);
+  }
+
+  const Model& model() const { return model_; }
+
+ private:
+  Model model_;
+  State state_;
+};
+
+// An inverse with its running state; the state is written as {"play": [...]} when it is a
+// play-operator state, and by the inverse's own codec function otherwise.
+template <class Inverse, class StateToJson>
+class InverseAdapter final : public DynamicInverse {
+ public:
+  InverseAdapter(Inverse inverse, typename Inverse::State state, StateToJson state_to_json)
+      : inverse_(std::move(inverse)),
+        state_(std::move(state)),
+        state_to_json_(std::move(state_to_json)) {}
+
+  InverseReport invert(std::span<const double> targets, std::span<double> inputs) override {
+    return hyst::invert(inverse_, state_, targets, inputs);
+  }
+  nlohmann::json state() const override { return state_to_json_(state_); }
+
+ private:
+  Inverse inverse_;
+  typename Inverse::State state_;
+  StateToJson state_to_json_;
+};
+
+}  // namespace hyst::detail

@@ -1,0 +1,12 @@
+#pragma once
+// One function per built-in model, each in its own <model>_entry.cpp.
+
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst::detail {
+
+ModelEntry prandtl_ishlinskii_entry();
+ModelEntry generalized_prandtl_ishlinskii_entry();
+ModelEntry preisach_entry();
+
+}  // namespace hyst::detail

@@ -1,0 +1,49 @@
+#include "hyst/registry/model_registry.hpp"
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+#include "model_entries.hpp"
+
+namespace hyst {
+
+const ModelRegistry& ModelRegistry::builtin() {
+  // Built explicitly rather than by self-registering statics, which a static library's linker
+  // would drop.
+  static const ModelRegistry registry = [] {
+    ModelRegistry r;
+    r.add(detail::prandtl_ishlinskii_entry());
+    r.add(detail::generalized_prandtl_ishlinskii_entry());
+    r.add(detail::preisach_entry());
+    return r;
+  }();
+  return registry;
+}
+
+const ModelEntry* ModelRegistry::find_if_known(std::string_view name) const {
+  for (const auto& entry : entries_) {
+    if (entry.name == name) return &entry;
+  }
+  return nullptr;
+}
+
+const ModelEntry& ModelRegistry::find(std::string_view name) const {
+  if (const auto* entry = find_if_known(name)) return *entry;
+  throw Error(fmt::format("unknown model '{}' (known: {})", name, names()));
+}
+
+std::string ModelRegistry::names() const {
+  std::string list;
+  for (const auto& entry : entries_)
+    list += (list.empty() ? "" : ", ") + entry.name;
+  return list;
+}
+
+void ModelRegistry::add(ModelEntry entry) {
+  if (find_if_known(entry.name)) {
+    throw Error(fmt::format("model '{}' is registered twice", entry.name));
+  }
+  entries_.push_back(std::move(entry));
+}
+
+}  // namespace hyst

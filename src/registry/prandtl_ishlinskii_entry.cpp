@@ -1,0 +1,147 @@
+// Registry entry of the Prandtl-Ishlinskii model: its model-file form, its inverse and its fitter.
+
+#include <fmt/format.h>
+
+#include "hyst/identify/fit_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+#include "model_adapter.hpp"
+#include "model_entries.hpp"
+
+namespace hyst::detail {
+namespace {
+
+nlohmann::json play_state_to_json(const PrandtlIshlinskii::State& state) {
+  return {{"play", state.play}};
+}
+
+struct PrandtlIshlinskiiCodec {
+  using Model = PrandtlIshlinskii;
+  static constexpr std::string_view name = "pi";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    return {{"thresholds", model.params().thresholds},
+            {"weights", model.params().weights},
+            {"offset", model.params().offset}};
+  }
+  static Model::Params params_from_json(JsonFields& fields) {
+    Model::Params params;
+    params.thresholds = fields.numbers("thresholds");
+    params.weights = fields.numbers("weights");
+    params.offset = fields.number_or("offset", 0.0);
+    return params;
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return play_state_to_json(state);
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    auto play = fields.numbers("play");
+    try {
+      return model.make_state(std::move(play));
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", fields.path_of("play"), error.what()));
+    }
+  }
+  static std::size_t parameter_count(const Model& model) {
+    return model.size() + 1;  // the weights and the offset; the thresholds are chosen, not fitted
+  }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    std::string text =
+        fmt::format("Prandtl-Ishlinskii model: {} play operators, offset {}, {}invertible\n",
+                    model.size(), p.offset, model.is_invertible() ? "" : "not ");
+    text += "   j   threshold r_j      weight p_j\n";
+    for (std::size_t j = 0; j < model.size(); ++j) {
+      text += fmt::format("{:4}  {:14.8g}  {:14.8g}\n", j, p.thresholds[j], p.weights[j]);
+    }
+    return text;
+  }
+  static bool has_inverse(const Model& model) { return model.is_invertible(); }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
+                                                      const InverseLimits& limits) {
+    InversePrandtlIshlinskii inverse(model, {limits.input_min, limits.input_max});
+    auto inverse_state = inverse.state_consistent_with(state);
+    return std::make_unique<
+        InverseAdapter<InversePrandtlIshlinskii, decltype(&play_state_to_json)>>(
+        std::move(inverse), std::move(inverse_state), &play_state_to_json);
+  }
+};
+
+using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
+  fields.finish();
+  std::optional<PrandtlIshlinskii> model;
+  try {
+    model.emplace(std::move(params));
+  } catch (const Error& error) {
+    rethrow_at(error, "params");
+  }
+  auto adapter = std::make_unique<PrandtlIshlinskiiAdapter>(*model, model->initial_state());
+  if (state_json) adapter->set_state(*state_json);
+  return adapter;
+}
+
+PiFitOptions fit_options_from_json(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  PiFitOptions options;
+  options.operators = fields.count_or("operators", options.operators);
+  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
+  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
+  options.min_linear_weight = fields.number_or("min_linear_weight", options.min_linear_weight);
+  if (fields.has("initial_state")) {
+    const auto initial_state = fields.string("initial_state");
+    try {
+      options.initial_state = pi_initial_state_from_string(initial_state);
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", fields.path_of("initial_state"), error.what()));
+    }
+  }
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  return options;
+}
+
+FitOutcome fit(const FitRequest& request) {
+  const auto options = fit_options_from_json(request);
+  auto result =
+      request.validation_input.empty()
+          ? fit_prandtl_ishlinskii(request.input, request.output, options)
+          : fit_prandtl_ishlinskii(request.input, request.output, request.validation_input,
+                                   request.validation_output, options);
+  return {std::make_unique<PrandtlIshlinskiiAdapter>(result.model, result.initial_state),
+          std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry prandtl_ishlinskii_entry() {
+  ModelEntry entry;
+  entry.name = std::string(PrandtlIshlinskiiCodec::name);
+  entry.description =
+      "Prandtl-Ishlinskii: weighted sum of play operators; analytic inverse; weights by NNLS";
+  entry.parameters = {
+      {"thresholds", "array of numbers", "input units",
+       "play half-widths r_j: 0 = r_0 < r_1 < ... (r_0 = 0 is the linear term)"},
+      {"weights", "array of numbers", "output / input units",
+       "p_j, one per threshold; invertible iff p_0 > 0 and all partial sums > 0"},
+      {"offset", "number", "output units", "y_off added to the output (default 0)"},
+  };
+  entry.fit_options = {
+      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
+      {"thresholds", "array of numbers", "input units", "fixed thresholds (default: uniform)"},
+      {"fit_offset", "boolean", "", "fit the output offset (true)"},
+      {"min_linear_weight", "number", "", "lower bound of p_0, keeps the model invertible"},
+      {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  entry.example_params = {
+      {"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.0}};
+  return entry;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,540 @@
+#!/usr/bin/env bash
+# Tests of the `hyst` command line, run as a program: exit status, standard output and error,
+# and the files it writes. Each case is a function; ctest runs one case per test:
+#
+#     HYST=build/apps/hyst HYST_SHARED_DATA_DIR=../shared/data bash tests/cli/cli_tests.sh models
+#
+# Exit status 0 = pass, 1 = fail, 77 = skipped (a needed data file is missing). Every error case
+# checks that the command fails with exactly one line on standard error, starting
+# "hyst: error:", that names the culprit (file, line, column, field, option) - and so also that
+# it did not crash (a crash or a sanitizer report prints something else, or more).
+
+set -u
+
+: "${HYST:?set HYST to the hyst executable}"
+HYST_SHARED_DATA_DIR="${HYST_SHARED_DATA_DIR:-}"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/hyst-cli-test.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK" || exit 1
+
+FAILURES=0
+STATUS=0
+
+fail() {
+  echo "FAIL: $*" >&2
+  FAILURES=$((FAILURES + 1))
+}
+
+# run CMD...: runs it; standard output in $WORK/stdout, standard error in $WORK/stderr, exit
+# status in STATUS.
+run() {
+  "$@" >"$WORK/stdout" 2>"$WORK/stderr"
+  STATUS=$?
+}
+
+show() {
+  echo "  command: $*" >&2
+  echo "  stdout: $(head -c 2000 "$WORK/stdout")" >&2
+  echo "  stderr: $(head -c 2000 "$WORK/stderr")" >&2
+}
+
+# expect_ok CMD...: exit status 0 and nothing on standard error.
+expect_ok() {
+  run "$@"
+  if [ "$STATUS" -ne 0 ]; then
+    fail "exit status $STATUS, expected 0"
+    show "$@"
+  elif [ -s "$WORK/stderr" ]; then
+    fail "unexpected standard error output"
+    show "$@"
+  fi
+}
+
+# expect_stdout TEXT...: standard output of the last run contains every TEXT (fixed strings).
+expect_stdout() {
+  local text
+  for text in "$@"; do
+    grep -qF -- "$text" "$WORK/stdout" || fail "standard output does not contain '$text':
+$(head -c 3000 "$WORK/stdout")"
+  done
+}
+
+# expect_error CODE TEXT... -- CMD...: CMD exits with CODE, prints exactly one line on standard
+# error, which starts with "hyst: error:" and contains every TEXT (fixed strings).
+expect_error() {
+  local code="$1"
+  shift
+  local texts=()
+  while [ "$#" -gt 0 ] && [ "$1" != "--" ]; do
+    texts+=("$1")
+    shift
+  done
+  shift
+  run "$@"
+  local lines
+  lines="$(wc -l <"$WORK/stderr")"
+  if [ "$STATUS" -ne "$code" ]; then
+    fail "exit status $STATUS, expected $code"
+    show "$@"
+    return
+  fi
+  if [ "$lines" -ne 1 ]; then
+    fail "$lines lines on standard error, expected exactly 1"
+    show "$@"
+    return
+  fi
+  if ! grep -q '^hyst: error: ' "$WORK/stderr"; then
+    fail "standard error does not start with 'hyst: error: '"
+    show "$@"
+    return
+  fi
+  local text
+  for text in "${texts[@]}"; do
+    if ! grep -qF -- "$text" "$WORK/stderr"; then
+      fail "error message does not contain '$text'"
+      show "$@"
+    fi
+  done
+}
+
+# expect_close FILE COLUMN_A FILE_B COLUMN_B TOLERANCE: the numeric columns (1-based, header line
+# skipped) agree within TOLERANCE (absolute), row by row, and have the same number of rows.
+expect_close() {
+  local result
+  result="$(awk -F, -v tol="$5" -v ca="$2" -v cb="$4" '
+    FNR == 1 { next }
+    NR == FNR { a[FNR] = $ca; na = FNR; next }
+    { nb = FNR; d = $cb - a[FNR]; if (d < 0) d = -d; if (d > worst) { worst = d; at = FNR } }
+    END {
+      if (na != nb) { printf "rows differ: %d vs %d", na - 1, nb - 1; exit }
+      if (na < 2) { printf "no rows"; exit }
+      if (worst > tol) printf "max difference %.3g at line %d exceeds %g", worst, at, tol
+    }' "$1" "$3")"
+  [ -z "$result" ] || fail "$1 column $2 vs $3 column $4: $result"
+}
+
+# expect_png FILE: FILE starts with the PNG signature and is not tiny.
+expect_png() {
+  if [ ! -f "$1" ]; then
+    fail "$1 was not written"
+    return
+  fi
+  local signature
+  signature="$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')"
+  [ "$signature" = "89504e470d0a1a0a" ] || fail "$1 does not start with the PNG signature"
+  [ "$(wc -c <"$1")" -gt 2000 ] || fail "$1 is suspiciously small"
+}
+
+# The temporary files of atomic writes must not survive.
+expect_no_temporaries() {
+  local left
+  left="$(find "$WORK" -name '.*.tmp.*')"
+  [ -z "$left" ] || fail "temporary files left behind: $left"
+}
+
+# --- test data --------------------------------------------------------------------------------
+
+# A PI model with the given thresholds, weights and offset (JSON arrays and a number).
+write_pi_model() {
+  printf '{"model": "pi", "version": 1,\n "params": {"thresholds": %s, "weights": %s, "offset": %s}}\n' \
+    "$2" "$3" "$4" >"$1"
+}
+
+# The known model used throughout: four plays.
+KNOWN_THRESHOLDS="[0, 0.3, 0.7, 1.0]"
+KNOWN_WEIGHTS="[0.8, 0.5, 0.3, 0.2]"
+
+# t, v: a decaying sine of amplitude 2 with many reversals (nested minor loops).
+write_input_csv() {
+  awk 'BEGIN {
+    pi = atan2(0, -1); print "t,v"
+    for (k = 0; k < 2000; ++k) printf "%.17g,%.17g\n", k * 1e-3, 2 * exp(-k / 900) * sin(2 * pi * k / 100)
+  }' >"$1"
+}
+
+# A MAT v5 file with double column vectors: write_mat FILE NAME COUNT [NAME COUNT ...]; the
+# values cycle through 0, 1, 2, 3, 4.
+le32() {
+  printf "\\x$(printf %02x $(($1 & 255)))\\x$(printf %02x $((($1 >> 8) & 255)))"
+  printf "\\x$(printf %02x $((($1 >> 16) & 255)))\\x$(printf %02x $((($1 >> 24) & 255)))"
+}
+write_mat() {
+  local file="$1"
+  shift
+  {
+    printf '%-116s' "MATLAB 5.0 MAT-file, written by the hyst command-line tests"
+    printf '\x00\x00\x00\x00\x00\x00\x00\x00\x00\x01IM'
+    while [ "$#" -gt 0 ]; do
+      local name="$1" count="$2"
+      shift 2
+      local name_padded=$(((${#name} + 7) / 8 * 8))
+      le32 14
+      le32 $((16 + 16 + 8 + name_padded + 8 + 8 * count))
+      le32 6; le32 8; le32 6; le32 0                      # array flags: mxDOUBLE_CLASS
+      le32 5; le32 8; le32 "$count"; le32 1               # dimensions: count x 1
+      le32 1; le32 "${#name}"; printf '%s' "$name"        # name, padded to 8 bytes
+      local pad
+      for ((pad = ${#name}; pad < name_padded; ++pad)); do printf '\x00'; done
+      le32 9; le32 $((8 * count))                         # real part: doubles
+      local k
+      for ((k = 0; k < count; ++k)); do
+        case $((k % 5)) in
+          0) printf '\x00\x00\x00\x00\x00\x00\x00\x00' ;;
+          1) printf '\x00\x00\x00\x00\x00\x00\xf0\x3f' ;;
+          2) printf '\x00\x00\x00\x00\x00\x00\x00\x40' ;;
+          3) printf '\x00\x00\x00\x00\x00\x00\x08\x40' ;;
+          4) printf '\x00\x00\x00\x00\x00\x00\x10\x40' ;;
+        esac
+      done
+    done
+  } >"$file"
+}
+
+# --- cases ------------------------------------------------------------------------------------
+
+case_help() {
+  expect_ok "$HYST" --help
+  expect_stdout "Example" "models" "simulate" "fit" "invert" "plot" "info"
+  local command
+  for command in models simulate fit invert plot info; do
+    expect_ok "$HYST" "$command" --help
+    expect_stdout "Example" "hyst $command"
+  done
+  expect_ok "$HYST" --version
+  expect_stdout "hyst "
+}
+
+case_models() {
+  expect_ok "$HYST" models
+  expect_stdout "pi" "yes" "Prandtl-Ishlinskii"
+  expect_ok "$HYST" models --json
+  expect_stdout '"name": "pi"' '"can_fit": true' '"can_invert": true'
+  expect_ok "$HYST" models pi
+  expect_stdout "thresholds" "weights" "offset" "fit options" "operators" "example model file:"
+  # The example is a ready-to-use model file.
+  sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >example.json
+  expect_ok "$HYST" info example.json
+  expect_stdout "model:      pi" "inverse:    yes"
+  expect_ok "$HYST" models pi --json
+  expect_stdout '"parameters"' '"fit_options"' '"example"' '"version": 1'
+  expect_error 1 "unknown model 'nosuch'" "known: pi" -- "$HYST" models nosuch
+}
+
+case_every_model() {
+  # The registry walk: every registered model's example file works with info, simulate, invert
+  # (simulating the inverse's input gives the target back) and fit.
+  write_input_csv in.csv
+  expect_ok "$HYST" models
+  local names name
+  names="$(awk 'NR > 1 && ($2 == "yes" || $2 == "no") { print $1 }' "$WORK/stdout")"
+  [ -n "$names" ] || fail "hyst models listed no model"
+  for name in $names; do
+    expect_ok "$HYST" models "$name"
+    sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >"$name.json"
+    expect_ok "$HYST" info "$name.json"
+    expect_stdout "model:      $name"
+    expect_ok "$HYST" simulate --model "$name.json" --input in.csv --column v --out "$name-y.csv"
+    expect_ok "$HYST" invert --model "$name.json" --target "$name-y.csv" --column y \
+      --out "$name-v.csv"
+    expect_ok "$HYST" simulate --model "$name.json" --input "$name-v.csv" --column v \
+      --out "$name-y2.csv"
+    expect_close "$name-y2.csv" 2 "$name-y.csv" 2 1e-6
+    expect_ok "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \
+      --validate-fraction 0.25 --out "$name-fit.json"
+    expect_stdout "$name fitted by"
+  done
+}
+
+case_simulate_round_trip() {
+  # One play with r = 0 is the identity, so y = 2 v + 0.5 exactly.
+  write_pi_model linear.json "[0]" "[2]" 0.5
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model linear.json --input in.csv --column v --out out.csv
+  expect_stdout "wrote out.csv: 2000 samples"
+  [ "$(head -n 1 out.csv)" = "v,y" ] || fail "out.csv header is '$(head -n 1 out.csv)'"
+  awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, 2 * $2 + 0.5 }' in.csv | sed '1i v,expected' >expected.csv
+  expect_close out.csv 2 expected.csv 2 1e-12
+  expect_close out.csv 1 in.csv 2 0
+  # The default input column is 'v'; --output-column names the output.
+  expect_ok "$HYST" simulate --model linear.json --input in.csv --out out2.csv --output-column x
+  [ "$(head -n 1 out2.csv)" = "v,x" ] || fail "out2.csv header is '$(head -n 1 out2.csv)'"
+  # The model file's state is the starting point: a play at w = 1 with r = 0.5 holds y = 1
+  # while v stays within [0.5, 1.5].
+  printf '{"model": "pi", "version": 1, "params": {"thresholds": [0, 0.5], "weights": [0, 1]},\n "state": {"play": [1, 1]}}\n' >stateful.json
+  printf 'v\n1\n0.6\n1.4\n' >hold.csv
+  expect_ok "$HYST" simulate --model stateful.json --input hold.csv --out held.csv
+  [ "$(cut -d, -f2 held.csv | tr '\n' ' ')" = "y 1 1 1 " ] || fail "held.csv: $(cat held.csv)"
+  expect_no_temporaries
+}
+
+case_invert_round_trip() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
+  awk 'BEGIN {
+    pi = atan2(0, -1); print "y"
+    for (k = 0; k < 1500; ++k) printf "%.17g\n", 0.1 + 1.5 * exp(-k / 700) * sin(2 * pi * k / 150)
+  }' >target.csv
+  expect_ok "$HYST" invert --model known.json --target target.csv --out v.csv
+  [ "$(head -n 1 v.csv)" = "y,v" ] || fail "v.csv header is '$(head -n 1 v.csv)'"
+  expect_ok "$HYST" simulate --model known.json --input v.csv --column v --out y.csv
+  expect_close y.csv 2 target.csv 1 1e-9
+  expect_no_temporaries
+}
+
+case_fit_known_pi() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  expect_ok "$HYST" fit pi --data data.csv --input v --output y --out fitted.json \
+    --option "thresholds=$KNOWN_THRESHOLDS" --validate-fraction 0.25 --report report.txt
+  expect_stdout "wrote fitted.json and report.txt"
+  [ -s report.txt ] || fail "report.txt is empty"
+  grep -q '"info"' fitted.json || fail "fitted.json has no info object"
+  grep -q '"termination"' fitted.json || fail "fitted.json info has no termination"
+  expect_ok "$HYST" info fitted.json
+  expect_stdout "model:      pi" "termination" "\"file\": \"data.csv\"" "\"input\": \"v\""
+  # The weights in the describe() table "j  threshold  weight" equal the known ones.
+  local weights
+  weights="$(awk 'NF == 3 && $1 ~ /^[0-9]+$/ { printf "%s ", $3 }' "$WORK/stdout")"
+  awk -v got="$weights" 'BEGIN {
+    n = split(got, w, " "); split("0.8 0.5 0.3 0.2", e, " ")
+    if (n != 4) { print "expected 4 weights, got: " got; exit 1 }
+    for (j = 1; j <= 4; ++j) { d = w[j] - e[j]; if (d < 0) d = -d; if (d > 1e-6) { print "weight " j - 1 " = " w[j] ", expected " e[j]; exit 1 } }
+  }' || fail "fitted weights differ from the known ones: $weights"
+  # A separate validation record, and --options as JSON.
+  expect_ok "$HYST" fit pi --data data.csv --input v --output y --out fitted2.json \
+    --options '{"operators": 6}' --validation-data data.csv
+  expect_stdout "wrote fitted2.json"
+  expect_no_temporaries
+}
+
+case_fit_mat_file() {
+  local mat="$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
+  if [ ! -f "$mat" ]; then
+    echo "SKIP: $mat not found"
+    exit 77
+  fi
+  expect_ok "$HYST" fit pi --data "$mat" --input Vplus_19kv --output Displacement_19kv \
+    --validation-data "$mat" --validation-input Vplus_1kv --validation-output Displacement_1kv \
+    --option operators=12 --option initial_state=periodic --out pzt.json --report pzt.txt
+  expect_stdout "wrote pzt.json and pzt.txt"
+  grep -qi "validation" pzt.txt || fail "pzt.txt does not mention the validation"
+  expect_ok "$HYST" info pzt.json
+  expect_stdout "Vplus_19kv" "Displacement_1kv" "\"validation\""
+  # The fitted model simulates the measured input, straight from the .mat file.
+  expect_ok "$HYST" simulate --model pzt.json --input "$mat" --column Vplus_19kv --out sim.csv
+  [ "$(wc -l <sim.csv)" -eq 402 ] || fail "sim.csv should have 401 rows"
+  expect_error 1 "no variable 'Nope'" "Vplus_19kv" -- \
+    "$HYST" fit pi --data "$mat" --input Nope --output Displacement_19kv --out x.json
+}
+
+case_invert_saturation() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  # From the virgin state a rising input follows y = sum_j p_j max(v - r_j, 0); with v <= 0.5 the
+  # highest reachable output is 0.8 * 0.5 + 0.5 * 0.2 = 0.5. Targets 0.01, 0.03, ..., 1.01:
+  # samples 25 (0.51) to 50 are out of reach, 26 of 51.
+  awk 'BEGIN { print "y"; for (k = 0; k <= 50; ++k) printf "%.17g\n", 0.02 * k + 0.01 }' >ramp.csv
+  run "$HYST" invert --model known.json --target ramp.csv --out v.csv --input-min -0.5 \
+    --input-max 0.5
+  [ "$STATUS" -eq 0 ] || { fail "exit status $STATUS"; show invert; }
+  [ "$(wc -l <"$WORK/stderr")" -eq 1 ] || fail "expected one warning line: $(cat "$WORK/stderr")"
+  grep -q "^hyst: warning: 26 of 51 samples saturated.*first at sample 25" "$WORK/stderr" ||
+    fail "warning: $(cat "$WORK/stderr")"
+  awk -F, 'NR > 1 && ($2 > 0.5 || $2 < -0.5) { bad = 1 } END { exit bad }' v.csv ||
+    fail "v.csv has inputs outside [-0.5, 0.5]"
+  # Without limits everything is reachable: no warning.
+  expect_ok "$HYST" invert --model known.json --target ramp.csv --out v2.csv
+  expect_error 1 "--input-min 1 must be less than --input-max -1" -- \
+    "$HYST" invert --model known.json --target ramp.csv --out v3.csv --input-min 1 --input-max -1
+}
+
+case_plot() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out sim.csv
+  # A data file with time, input and output.
+  paste -d, in.csv <(cut -d, -f2 sim.csv) >data.csv
+  if ! command -v gnuplot >/dev/null 2>&1; then
+    expect_error 1 "gnuplot" -- "$HYST" plot --data data.csv --x t --y v,y --out series.png
+    return
+  fi
+  expect_ok "$HYST" plot --data data.csv --x t --y v,y --out series.png --title "it's a test"
+  expect_png series.png
+  expect_ok "$HYST" plot --data data.csv --x v --y y --kind loop --out loop.png
+  expect_png loop.png
+  expect_ok "$HYST" plot --data data.csv --x v --y y --kind loop --model known.json \
+    --out overlay.png
+  expect_stdout "2 series"
+  expect_png overlay.png
+  expect_ok "$HYST" plot --data data.csv --x t --y y --model known.json --input v --out fit.png
+  expect_png fit.png
+  expect_ok "$HYST" plot --data data.csv --y y --out index.png
+  expect_png index.png
+  expect_error 1 "--kind loop needs --x" -- "$HYST" plot --data data.csv --y y --kind loop \
+    --out l.png
+  expect_error 1 "needs --input" -- "$HYST" plot --data data.csv --x t --y y --model known.json \
+    --out l.png
+  expect_error 1 "no column 'q'" "columns: t, v, y" -- \
+    "$HYST" plot --data data.csv --x t --y y,q --out l.png
+  expect_error 2 "--kind" -- "$HYST" plot --data data.csv --x t --y y --kind pie --out l.png
+  expect_error 1 "--out" "nofolder/p.png" "does not exist" -- \
+    "$HYST" plot --data data.csv --x t --y y --out nofolder/p.png
+  expect_no_temporaries
+}
+
+# Usage errors (exit 2) and unknown names.
+case_bad_inputs() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  expect_error 2 "subcommand" -- "$HYST"
+  expect_error 2 "unknown command 'frobnicate'" "models, simulate, fit" -- "$HYST" frobnicate
+  expect_error 2 "--model" "hyst simulate --help" -- "$HYST" simulate --input x.csv --out y.csv
+  expect_error 2 "--bogus" -- "$HYST" info known.json --bogus
+  expect_error 2 "--input-min" -- "$HYST" invert --model known.json --target t.csv --out o.csv \
+    --input-min abc
+  expect_error 2 "--validation-data" -- "$HYST" fit pi --data d.csv --input v --output y \
+    --out m.json --validate-fraction 0.2 --validation-data d.csv
+  expect_error 1 "unknown model 'nosuch'" "known: pi" -- \
+    "$HYST" fit nosuch --data d.csv --input v --output y --out m.json
+  expect_error 1 "cannot open 'missing.json'" "No such file" -- "$HYST" info missing.json
+  expect_error 1 "cannot open 'missing.csv'" -- \
+    "$HYST" simulate --model known.json --input missing.csv --out o.csv
+  expect_error 1 "missing.mat" -- \
+    "$HYST" simulate --model known.json --input missing.mat --out o.csv
+}
+
+case_bad_model_files() {
+  write_input_csv in.csv
+  printf '{"model": "pi", "version": 1,\n "params": {"thresholds": [0, 0.5],\n   "weights": [1, 2,]}}\n' >malformed.json
+  expect_error 1 "malformed.json" "not valid JSON" "line 3" "column" -- \
+    "$HYST" simulate --model malformed.json --input in.csv --out o.csv
+  printf '{"model": "preisachh", "version": 1, "params": {}}\n' >unknown_model.json
+  expect_error 1 "unknown_model.json" "unknown model 'preisachh'" -- \
+    "$HYST" info unknown_model.json
+  printf '{"model": "pi", "version": 1, "params": {"thresholds": [0], "wieghts": [1]}}\n' >typo.json
+  expect_error 1 "typo.json" "params.w" -- "$HYST" info typo.json
+  printf '{"model": "pi", "version": 1, "colour": "red", "params": {"thresholds": [0], "weights": [1]}}\n' >extra.json
+  expect_error 1 "extra.json" "colour: unknown field" -- "$HYST" info extra.json
+  write_pi_model negative.json "[0, -0.2, 0.5]" "[1, 1, 1]" 0
+  expect_error 1 "negative.json" "params.thresholds[1]" -- \
+    "$HYST" simulate --model negative.json --input in.csv --out o.csv
+  write_pi_model decreasing.json "[0, 0.5, 0.5]" "[1, 1, 1]" 0
+  expect_error 1 "decreasing.json" "params.thresholds[2]" -- "$HYST" info decreasing.json
+  write_pi_model short.json "[0, 0.5]" "[1]" 0
+  expect_error 1 "short.json" "weights" -- "$HYST" info short.json
+  printf '{"model": "pi", "version": 2, "params": {"thresholds": [0], "weights": [1]}}\n' >v2.json
+  expect_error 1 "v2.json" "version" -- "$HYST" info v2.json
+  printf '{"model": "pi", "version": 1, "params": {"thresholds": [0, 1], "weights": [1, 1]},\n "state": {"play": [0, 5]}}\n' >state.json
+  expect_error 1 "state.json" "state.play" -- "$HYST" info state.json
+  # Invert a model without inverse: p_0 <= 0.
+  write_pi_model no_inverse.json "[0, 0.5]" "[0, 1]" 0
+  printf 'y\n0\n1\n' >target.csv
+  expect_error 1 "no_inverse.json" "no inverse" "p[0]" -- \
+    "$HYST" invert --model no_inverse.json --target target.csv --out v.csv
+  expect_ok "$HYST" info no_inverse.json
+  expect_stdout "inverse:    no"
+}
+
+case_bad_data() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  printf 't,v\n0,0.1\n1,abc\n' >word.csv
+  expect_error 1 "word.csv:3" "column 2 ('v')" "'abc' is not a number" -- \
+    "$HYST" simulate --model known.json --input word.csv --out o.csv
+  printf 't,v\n0,0.1\n# a comment\n1,nan\n' >nan.csv
+  expect_error 1 "nan.csv:4" "column 2 ('v')" "not finite" -- \
+    "$HYST" simulate --model known.json --input nan.csv --out o.csv
+  printf 't,v\n0,0.1\n1,0.2,7\n' >ragged.csv
+  expect_error 1 "ragged.csv:3" -- "$HYST" simulate --model known.json --input ragged.csv \
+    --out o.csv
+  printf 't,a,b\n0,1,2\n' >several.csv
+  expect_error 1 "several.csv" "t, a, b" "--column" -- \
+    "$HYST" simulate --model known.json --input several.csv --out o.csv
+  expect_error 1 "several.csv: no column 'q'" "(columns: t, a, b)" -- \
+    "$HYST" simulate --model known.json --input several.csv --column q --out o.csv
+  expect_error 1 "several.csv: no column 'y'" "(columns: t, a, b)" -- \
+    "$HYST" fit pi --data several.csv --input a --output y --out m.json
+  : >empty.csv
+  expect_error 1 "empty.csv" -- "$HYST" simulate --model known.json --input empty.csv --out o.csv
+  printf 'not a mat file\n' >fake.mat
+  expect_error 1 "fake.mat" -- "$HYST" simulate --model known.json --input fake.mat --out o.csv
+  expect_error 1 "--output-column 't'" -- \
+    "$HYST" simulate --model known.json --input several.csv --column t --out o.csv --output-column t
+  [ ! -e o.csv ] || fail "o.csv was written despite the errors"
+}
+
+case_bad_fit_inputs() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  local fit=("$HYST" fit pi --data data.csv --input v --output y --out m.json)
+  expect_error 1 "frobnication" "unknown field" -- "${fit[@]}" --option frobnication=3
+  expect_error 1 "operators" -- "${fit[@]}" --option operators=-2
+  expect_error 1 "--option 'operators'" "key=value" -- "${fit[@]}" --option operators
+  expect_error 1 "--options: not valid JSON" -- "${fit[@]}" --options '{"operators": }'
+  expect_error 1 "--options: expected a JSON object" -- "${fit[@]}" --options '[1]'
+  expect_error 1 "initial_state" "'hot'" "periodic" -- "${fit[@]}" --option initial_state=hot
+  expect_error 1 "--validate-fraction 1.5" -- "${fit[@]}" --validate-fraction 1.5
+  expect_error 1 "--validate-fraction 0.0001" -- "${fit[@]}" --validate-fraction 0.0001
+  expect_error 1 "no column 'w'" -- "${fit[@]}" --validation-data data.csv --validation-input w
+  expect_error 1 "cannot open 'other.csv'" -- "${fit[@]}" --validation-data other.csv
+  printf 'v,y\n0,1\n1,1\n2,1\n3,1\n4,1\n5,1\n6,1\n7,1\n8,1\n9,1\n10,1\n11,1\n12,1\n13,1\n' >flat.csv
+  expect_error 1 "" -- "$HYST" fit pi --data flat.csv --input v --output y --out m.json \
+    --option operators=2
+  [ ! -e m.json ] || fail "m.json was written despite the errors"
+  # A model without a fitter, when there is one (the JSON keys are sorted: can_fit comes before
+  # name). Every registered model could be fitted when this was written.
+  local unfittable
+  unfittable="$("$HYST" models --json | awk '/"can_fit": false/ { f = 1 } /"can_fit": true/ { f = 0 }
+    /"name":/ && f { gsub(/[",]/, "", $2); print $2; exit }')"
+  if [ -n "$unfittable" ]; then
+    expect_error 1 "model '$unfittable' cannot be fitted" "models that can: pi" -- \
+      "$HYST" fit "$unfittable" --data data.csv --input v --output y --out m.json
+  fi
+}
+
+# Mismatched lengths can only come from .mat files (CSV columns are equal by construction).
+case_bad_mat_lengths() {
+  write_mat lengths.mat a 12 b 11 c 12
+  expect_error 1 "data 'lengths.mat'" "input 'a' has 12 samples but output 'b' has 11" -- \
+    "$HYST" fit pi --data lengths.mat --input a --output b --out m.json
+  expect_error 1 "validation data 'lengths.mat'" "input 'a' has 12 samples but output 'b' has 11" -- \
+    "$HYST" fit pi --data lengths.mat --input a --output c --out m.json \
+    --validation-data lengths.mat --validation-input a --validation-output b
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  expect_ok "$HYST" simulate --model known.json --input lengths.mat --column b --out b.csv
+  [ "$(wc -l <b.csv)" -eq 12 ] || fail "b.csv should have 11 rows: $(cat b.csv)"
+  expect_error 1 "no variable 'z'" -- \
+    "$HYST" simulate --model known.json --input lengths.mat --column z --out z.csv
+}
+
+case_unwritable_output() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  printf 'x\n' >file
+  expect_error 1 "file/o.csv" "not a folder" -- \
+    "$HYST" simulate --model known.json --input in.csv --out file/o.csv
+  expect_error 1 "file/m.json" "not a folder" -- \
+    "$HYST" fit pi --data data.csv --input v --output y --out file/m.json
+  expect_error 1 "file/r.txt" "not a folder" -- \
+    "$HYST" fit pi --data data.csv --input v --output y --out m.json --report file/r.txt
+  expect_error 1 "file/v.csv" "not a folder" -- \
+    "$HYST" invert --model known.json --target data.csv --column y --out file/v.csv
+  expect_error 1 "file/p.png" "not a folder" -- \
+    "$HYST" plot --data data.csv --x t --y y --out file/p.png
+  expect_error 1 "missing/o.csv" "does not exist" -- \
+    "$HYST" simulate --model known.json --input in.csv --out missing/o.csv
+  [ ! -e m.json ] || fail "m.json was written although --report is unwritable"
+  expect_no_temporaries
+}
+
+# --- main -------------------------------------------------------------------------------------
+
+if [ "$#" -ne 1 ] || ! declare -F "case_$1" >/dev/null; then
+  echo "usage: cli_tests.sh CASE   (cases: $(declare -F | sed -n 's/^declare -f case_//p' | tr '\n' ' '))" >&2
+  exit 2
+fi
+"case_$1"
+if [ "$FAILURES" -ne 0 ]; then
+  echo "$1: $FAILURES failure(s)" >&2
+  exit 1
+fi
+echo "$1: passed"
