@@ -70,6 +70,8 @@ std::string fit_section(const fs::path& folder, const std::vector<Record>& recor
       "| record | role | RMSE [nm] | NRMSE | max error [nm] |\n|---|---|---:|---:|---:|\n";
   hyst::plot::Figure loops{
       "PI model vs measured piezo loops", "voltage [V]", "displacement [nm]", {}};
+  // One colour per amplitude: measured as points, the model's prediction as a line.
+  const std::vector<std::string> colours{"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"};
   for (std::size_t i = 0; i < records.size(); ++i) {
     const auto& record = records[i];
     const auto predicted = predict(fit.model, record.voltage);
@@ -78,8 +80,9 @@ std::string fit_section(const fs::path& folder, const std::vector<Record>& recor
                          i == fitted ? "fit" : "validation", metrics.rmse, metrics.nrmse,
                          metrics.max_error);
     loops.series.push_back({"measured " + record.label, record.voltage, record.displacement,
-                            hyst::plot::Series::Style::points});
-    loops.series.push_back({"model " + record.label, record.voltage, predicted});
+                            hyst::plot::Series::Style::points, colours[i % colours.size()]});
+    loops.series.push_back({"model " + record.label, record.voltage, predicted,
+                            hyst::plot::Series::Style::lines, colours[i % colours.size()]});
     if (i == 1) {
       std::vector<double> sample(record.voltage.size()), error(record.voltage.size());
       for (std::size_t k = 0; k < sample.size(); ++k) {

@@ -7,7 +7,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -51,6 +53,13 @@ void validate(const Figure& figure) {
                               series.x.size(), series.y.size()));
     }
     if (series.x.empty()) throw Error(fmt::format("{} has no points", series_name(figure, s)));
+    const bool plain_colour = std::all_of(series.color.begin(), series.color.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '#' || c == '-';
+    });
+    if (!plain_colour) {
+      throw Error(fmt::format("{}: colour '{}' must be \"#rrggbb\" or a gnuplot colour name",
+                              series_name(figure, s), series.color));
+    }
     for (std::size_t k = 0; k < series.x.size(); ++k) {
       if (!std::isfinite(series.x[k])) {
         throw Error(
@@ -125,7 +134,8 @@ std::string script_for(const Figure& figure, const fs::path& output) {
     const auto& series = figure.series[s];
     if (s > 0) script += ", \\\n     ";
     script +=
-        fmt::format("$d{} using 1:2 {} {}", s, style_clause(series.style),
+        fmt::format("$d{} using 1:2 {}{} {}", s, style_clause(series.style),
+                    series.color.empty() ? "" : " lc rgb " + gnuplot_string(series.color),
                     series.label.empty() ? "notitle" : "title " + gnuplot_string(series.label));
   }
   script += "\nunset output\n";

@@ -82,7 +82,8 @@ TEST_F(GnuplotTest, WritesAPngAndLeavesNoTemporaryFile) {
   figure.series.push_back({.label = "line & points",
                            .x = {-1, 0, 1},
                            .y = {-1, 0.2, 1},
-                           .style = Series::Style::lines_points});
+                           .style = Series::Style::lines_points,
+                           .color = "#d95f02"});
   write_png(figure, png);
   const auto content = slurp(png);
   ASSERT_GE(content.size(), 1000u);
@@ -98,6 +99,14 @@ TEST_F(GnuplotTest, ReplacesAnExistingFile) {
             png);
   EXPECT_EQ(slurp(png).substr(0, 8), std::string(kPngSignature, 8));
   EXPECT_EQ(entries(), std::vector<std::string>{"p.png"});
+}
+
+TEST_F(GnuplotTest, RejectsColoursThatWouldBreakTheScript) {
+  Figure figure = loop_figure();
+  figure.series.push_back({.label = "model", .x = {1, 2}, .y = {1, 2}, .color = "red' lw 9"});
+  EXPECT_HYST_ERROR(write_png(figure, dir_ / "p.png"),
+                    "series 2 ('model'): colour 'red' lw 9' must be \"#rrggbb\" or a gnuplot");
+  EXPECT_TRUE(entries().empty());
 }
 
 TEST_F(GnuplotTest, RejectsMismatchedSeriesNamingIt) {

@@ -27,6 +27,8 @@ struct Series {
   std::vector<double> x{};
   std::vector<double> y{};  //!< same length as x, at least one point, every value finite
   enum class Style { lines, points, lines_points } style = Style::lines;
+  //! "#rrggbb" or a gnuplot colour name (letters, digits, '-'); empty: gnuplot's next colour.
+  std::string color{};
 };
 
 //! A figure with one pair of axes. (The `{}` initializers let designated initializers leave
