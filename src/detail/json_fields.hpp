@@ -33,6 +33,17 @@ class JsonFields {
   bool boolean_or(std::string_view key, bool fallback);
   std::string string(std::string_view key);
   std::string string_or(std::string_view key, std::string fallback);
+  // A string field turned into a value by `parse` (e.g. an enumeration's from_string); a
+  // hyst::Error from `parse` gets the field's path in front.
+  template <class Parse>
+  auto parsed(std::string_view key, Parse parse) {
+    const auto text = string(key);
+    try {
+      return parse(text);
+    } catch (const Error& error) {
+      throw Error(path_of(key) + ": " + error.what());
+    }
+  }
   // The raw value of a field, or nullptr when absent.
   const nlohmann::json* raw(std::string_view key);
 

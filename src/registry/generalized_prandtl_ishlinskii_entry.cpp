@@ -91,18 +91,10 @@ struct GpiCodec {
 
 GpiParams params_from_json(JsonFields& fields) {
   GpiParams params;
-  const auto read_kind = [&](std::string_view key, auto parse) {
-    const auto text = fields.string(key);
-    try {
-      return parse(text);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path_of(key), error.what()));
-    }
-  };
-  params.envelope = read_kind("envelope", envelope_kind_from_string);
+  params.envelope = fields.parsed("envelope", envelope_kind_from_string);
   params.ascending = fields.numbers("ascending");
   params.descending = fields.numbers("descending");
-  params.density = read_kind("density", gpi_density_from_string);
+  params.density = fields.parsed("density", gpi_density_from_string);
   if (params.density == GpiDensity::exponential) {
     params.rho = fields.number("rho");
     params.tau = fields.number("tau");
@@ -147,12 +139,7 @@ GpiFitOptions fit_options_from_json(const FitRequest& request) {
   GpiFitOptions options;
   options.m = fields.count_or("m", options.m);
   if (fields.has("initial_state")) {
-    const auto text = fields.string("initial_state");
-    try {
-      options.initial_state = gpi_initial_state_from_string(text);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path_of("initial_state"), error.what()));
-    }
+    options.initial_state = fields.parsed("initial_state", gpi_initial_state_from_string);
   }
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
   if (fields.has("input_min")) options.input_min = fields.number("input_min");

@@ -93,12 +93,7 @@ PiFitOptions fit_options_from_json(const FitRequest& request) {
   options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
   options.min_linear_weight = fields.number_or("min_linear_weight", options.min_linear_weight);
   if (fields.has("initial_state")) {
-    const auto initial_state = fields.string("initial_state");
-    try {
-      options.initial_state = pi_initial_state_from_string(initial_state);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path_of("initial_state"), error.what()));
-    }
+    options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
   }
   fields.finish();
   options.validate_fraction = request.validate_fraction;

@@ -87,16 +87,6 @@ struct PreisachCodec {
 
 using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
-template <class Parse>
-auto parse_field(JsonFields& fields, std::string_view key, Parse parse) {
-  const auto text = fields.string(key);
-  try {
-    return parse(text);
-  } catch (const Error& error) {
-    throw Error(fmt::format("{}: {}", fields.path_of(key), error.what()));
-  }
-}
-
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
@@ -106,11 +96,11 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   params.everett.upper = fields.number("upper");
   params.everett.weights = fields.numbers("weights");
   if (fields.has("layout")) {
-    params.everett.layout = parse_field(fields, "layout", preisach_grid_layout_from_string);
+    params.everett.layout = fields.parsed("layout", preisach_grid_layout_from_string);
   }
   params.offset = fields.number_or("offset", 0.0);
   if (fields.has("initial_state")) {
-    params.initial_state = parse_field(fields, "initial_state", preisach_initial_state_from_string);
+    params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
   }
   fields.finish();
   std::optional<Preisach> model;
@@ -131,11 +121,10 @@ FitOutcome fit(const FitRequest& request) {
   if (fields.has("lower")) options.lower = fields.number("lower");
   if (fields.has("upper")) options.upper = fields.number("upper");
   if (fields.has("layout")) {
-    options.layout = parse_field(fields, "layout", preisach_grid_layout_from_string);
+    options.layout = fields.parsed("layout", preisach_grid_layout_from_string);
   }
   if (fields.has("initial_state")) {
-    options.initial_state =
-        parse_field(fields, "initial_state", preisach_initial_state_from_string);
+    options.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
   }
   options.smoothness = fields.number_or("smoothness", options.smoothness);
   options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
