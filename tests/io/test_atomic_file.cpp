@@ -16,46 +16,18 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "../support/temp_folder_test.hpp"
 
 namespace hyst::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test under the system's temporary folder, removed afterwards.
-class AtomicFileTest : public testing::Test {
+class AtomicFileTest : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           fmt::format("hyst-test-{}-{}-{}", info->test_suite_name(), info->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  // The names in the test folder, sorted.
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  static std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
   static void put(const fs::path& path, const std::string& content) {
     std::ofstream(path, std::ios::binary) << content;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(AtomicFileTest, CreatesTheFileWithTheContentAndLeavesNoTemporary) {

@@ -14,41 +14,15 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "../support/temp_folder_test.hpp"
 
 namespace hyst::plot {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test under the system's temporary folder, removed afterwards.
-class GnuplotTest : public testing::Test {
+class GnuplotTest : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           fmt::format("hyst-test-{}-{}-{}", info->test_suite_name(), info->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  static std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-
   // A loop: y = sin, x = cos, plus a second series with points.
   static Figure loop_figure() {
     Figure figure{.title = "a 'quoted' title with \"double\" quotes, Vplus_19kv, 50% & {x}",
@@ -68,8 +42,6 @@ class GnuplotTest : public testing::Test {
     figure.series = {circle, dots};
     return figure;
   }
-
-  fs::path dir_;
 };
 
 constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
