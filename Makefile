@@ -41,7 +41,7 @@ build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
 demo: build
-	$(BUILD)/apps/hyst_demo $(DEMO_OUT)
+	$(BUILD)/apps/hyst_demo --data ../shared/data --out $(DEMO_OUT)
 
 test: build
 	$(MAKE) test-cpp bench-smoke test-sanitize

@@ -183,6 +183,10 @@ int run(const fs::path& data_dir, const fs::path& folder) {
       "which PI cannot follow).\n\n",
       mat.string(), records[fitted].label, fit.model.size());
   markdown += fit_section(folder, records, fit, fitted);
+  markdown +=
+      "\nEvery row is a prediction from the record's periodic state, zeroed at its first "
+      "sample like the measurement; the fit report below scores the fit with the fitted "
+      "offset instead.\n";
   markdown += "\n```\n" + fit.report.brief() + "\n```\n\n";
   markdown += "## 2. Compensation with the inverse model\n\n";
   markdown += compensation_section(folder, fit.model, 250.0);
@@ -199,6 +203,11 @@ int run(const fs::path& data_dir, const fs::path& folder) {
 int main(int argc, char** argv) {
   fs::path data_dir = "../shared/data";
   fs::path folder = "out/demo";
+  if (argc % 2 == 0) {
+    fmt::print(stderr, "hyst_demo: '{}' needs a value (use --data DIR, --out DIR)\n",
+               argv[argc - 1]);
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string_view flag = argv[i];
     if (flag == "--data") {
