@@ -43,12 +43,7 @@ struct GpiCodec {
     return {{"play", state.play}};
   }
   static typename Model::State state_from_json(const Model& model, JsonFields& fields) {
-    auto play = fields.numbers("play");
-    try {
-      return model.make_state(std::move(play));
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path_of("play"), error.what()));
-    }
+    return play_state_from_json(model, fields);
   }
   static std::size_t parameter_count(const Model& model) {
     const auto& p = model.params();
@@ -110,27 +105,13 @@ GpiParams params_from_json(JsonFields& fields) {
   return params;
 }
 
-template <class E>
-std::unique_ptr<DynamicModel> make_adapter(GeneralizedPrandtlIshlinskii<E> model,
-                                           const nlohmann::json* state_json) {
-  auto adapter = std::make_unique<ModelAdapter<GpiCodec<E>>>(model, model.initial_state());
-  if (state_json) adapter->set_state(*state_json);
-  return adapter;
-}
-
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   auto params = params_from_json(fields);
   fields.finish();
-  return visit_envelope(params.envelope, [&]<class E>(E) -> std::unique_ptr<DynamicModel> {
-    std::optional<GeneralizedPrandtlIshlinskii<E>> model;
-    try {
-      model.emplace(params);
-    } catch (const Error& error) {
-      rethrow_at(error, "params");
-    }
-    return make_adapter(std::move(*model), state_json);
+  return visit_envelope(params.envelope, [&]<class E>(E) {
+    return make_dynamic_model<GpiCodec<E>>(params, state_json);
   });
 }
 

@@ -17,6 +17,7 @@
 //   };
 
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "../detail/json_fields.hpp"
@@ -84,5 +85,33 @@ class InverseAdapter final : public DynamicInverse {
   typename Inverse::State state_;
   StateToJson state_to_json_;
 };
+
+// The model of validated `params` (a validation error gets "params." and its field in front),
+// wrapped with its initial state or, when the model file has one, the file's state.
+template <class Codec>
+std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params params,
+                                                 const nlohmann::json* state_json) {
+  using Model = typename Codec::Model;
+  std::optional<Model> model;
+  try {
+    model.emplace(std::move(params));
+  } catch (const Error& error) {
+    rethrow_at(error, "params");
+  }
+  auto adapter = std::make_unique<ModelAdapter<Codec>>(*model, model->initial_state());
+  if (state_json) adapter->set_state(*state_json);
+  return adapter;
+}
+
+// {"play": [...]}: the state of every play-operator model (PI, GPI), validated by the model.
+template <class Model>
+typename Model::State play_state_from_json(const Model& model, JsonFields& fields) {
+  auto play = fields.numbers("play");
+  try {
+    return model.make_state(std::move(play));
+  } catch (const Error& error) {
+    throw Error(fields.path_of("play") + ": " + error.what());
+  }
+}
 
 }  // namespace hyst::detail

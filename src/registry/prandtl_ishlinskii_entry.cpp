@@ -35,12 +35,7 @@ struct PrandtlIshlinskiiCodec {
     return play_state_to_json(state);
   }
   static Model::State state_from_json(const Model& model, JsonFields& fields) {
-    auto play = fields.numbers("play");
-    try {
-      return model.make_state(std::move(play));
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path_of("play"), error.what()));
-    }
+    return play_state_from_json(model, fields);
   }
   static std::size_t parameter_count(const Model& model) {
     return model.size() + 1;  // the weights and the offset; the thresholds are chosen, not fitted
@@ -74,15 +69,7 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   JsonFields fields(params_json, "params");
   auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
   fields.finish();
-  std::optional<PrandtlIshlinskii> model;
-  try {
-    model.emplace(std::move(params));
-  } catch (const Error& error) {
-    rethrow_at(error, "params");
-  }
-  auto adapter = std::make_unique<PrandtlIshlinskiiAdapter>(*model, model->initial_state());
-  if (state_json) adapter->set_state(*state_json);
-  return adapter;
+  return make_dynamic_model<PrandtlIshlinskiiCodec>(std::move(params), state_json);
 }
 
 PiFitOptions fit_options_from_json(const FitRequest& request) {

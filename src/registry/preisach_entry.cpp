@@ -103,15 +103,7 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
     params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
   }
   fields.finish();
-  std::optional<Preisach> model;
-  try {
-    model.emplace(std::move(params));
-  } catch (const Error& error) {
-    rethrow_at(error, "params");
-  }
-  auto adapter = std::make_unique<PreisachAdapter>(*model, model->initial_state());
-  if (state_json) adapter->set_state(*state_json);
-  return adapter;
+  return make_dynamic_model<PreisachCodec>(std::move(params), state_json);
 }
 
 FitOutcome fit(const FitRequest& request) {
