@@ -1,0 +1,11 @@
+#pragma once
+// The sections of the demo behind `make demo`, one file each. A section reads what it needs
+// from the data folder, writes its plots and CSV files into the output folder and returns its
+// part of results.md.
+
+#include <filesystem>
+#include <string>
+
+// PI fit on measured piezo loops and inverse-PI compensation (piezo_section.cpp).
+std::string piezo_section(const std::filesystem::path& data_dir,
+                          const std::filesystem::path& folder);
