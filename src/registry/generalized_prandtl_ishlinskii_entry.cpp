@@ -144,6 +144,14 @@ FitOutcome fit(const FitRequest& request) {
 
 }  // namespace
 
+GpiParams generalized_prandtl_ishlinskii_params_from_json(const nlohmann::json& params_json,
+                                                          const std::string& path) {
+  JsonFields fields(params_json, path);
+  auto params = params_from_json(fields);
+  fields.finish();
+  return params;
+}
+
 ModelEntry generalized_prandtl_ishlinskii_entry() {
   ModelEntry entry;
   entry.name = "gpi";

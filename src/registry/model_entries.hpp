@@ -1,6 +1,9 @@
 #pragma once
 // One function per built-in model, each in its own <model>_entry.cpp.
 
+#include "hyst/models/generalized_prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/preisach.hpp"
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst::detail {
@@ -8,5 +11,13 @@ namespace hyst::detail {
 ModelEntry prandtl_ishlinskii_entry();
 ModelEntry generalized_prandtl_ishlinskii_entry();
 ModelEntry preisach_entry();
+
+// The validated-by-shape parameters of a model file's "params" object (unknown fields rejected;
+// messages name the path, e.g. "hysteresis.params.rho"), for code that builds the concrete model.
+PrandtlIshlinskii::Params prandtl_ishlinskii_params_from_json(const nlohmann::json& params,
+                                                              const std::string& path);
+GpiParams generalized_prandtl_ishlinskii_params_from_json(const nlohmann::json& params,
+                                                          const std::string& path);
+Preisach::Params preisach_params_from_json(const nlohmann::json& params, const std::string& path);
 
 }  // namespace hyst::detail

@@ -100,6 +100,14 @@ FitOutcome fit(const FitRequest& request) {
 
 }  // namespace
 
+PrandtlIshlinskii::Params prandtl_ishlinskii_params_from_json(const nlohmann::json& params_json,
+                                                              const std::string& path) {
+  JsonFields fields(params_json, path);
+  auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
+  fields.finish();
+  return params;
+}
+
 ModelEntry prandtl_ishlinskii_entry() {
   ModelEntry entry;
   entry.name = std::string(PrandtlIshlinskiiCodec::name);

@@ -14,6 +14,26 @@
 #include "model_entries.hpp"
 
 namespace hyst::detail {
+
+Preisach::Params preisach_params_from_json(const nlohmann::json& params_json,
+                                           const std::string& path) {
+  JsonFields fields(params_json, path);
+  Preisach::Params params;
+  params.everett.levels = fields.count("levels");
+  params.everett.lower = fields.number("lower");
+  params.everett.upper = fields.number("upper");
+  params.everett.weights = fields.numbers("weights");
+  if (fields.has("layout")) {
+    params.everett.layout = fields.parsed("layout", preisach_grid_layout_from_string);
+  }
+  params.offset = fields.number_or("offset", 0.0);
+  if (fields.has("initial_state")) {
+    params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
+  }
+  fields.finish();
+  return params;
+}
+
 namespace {
 
 // The state in a file: the saturation the history starts from, the stored extrema, and the last
@@ -89,21 +109,8 @@ using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  Preisach::Params params;
-  params.everett.levels = fields.count("levels");
-  params.everett.lower = fields.number("lower");
-  params.everett.upper = fields.number("upper");
-  params.everett.weights = fields.numbers("weights");
-  if (fields.has("layout")) {
-    params.everett.layout = fields.parsed("layout", preisach_grid_layout_from_string);
-  }
-  params.offset = fields.number_or("offset", 0.0);
-  if (fields.has("initial_state")) {
-    params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
-  }
-  fields.finish();
-  return make_dynamic_model<PreisachCodec>(std::move(params), state_json);
+  return make_dynamic_model<PreisachCodec>(preisach_params_from_json(params_json, "params"),
+                                           state_json);
 }
 
 FitOutcome fit(const FitRequest& request) {
