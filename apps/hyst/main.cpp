@@ -1,5 +1,6 @@
 // hyst: the command line of the hyst library. One subcommand per task (models, simulate, fit,
-// invert, plot, info; apps/hyst/commands/), all built on the model registry and model files.
+// invert, plot, info, actuator; apps/hyst/commands/), all built on the model registry and model
+// files.
 //
 // Exit status: 0 on success (and for --help, --version), 1 when the work fails (invalid data or
 // model files, unwritable output, ...), 2 for usage errors (unknown options, missing arguments).
@@ -66,6 +67,7 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   hyst::cli::add_invert_command(app);
   hyst::cli::add_plot_command(app);
   hyst::cli::add_info_command(app);
+  hyst::cli::add_actuator_command(app);
 
   try {
     app.parse(argc, argv);

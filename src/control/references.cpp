@@ -116,10 +116,11 @@ Reference reference_from_csv(const std::filesystem::path& path, double sample_ti
     for (std::size_t k = 1; k < t.size(); ++k) {
       const double spacing = t[k] - t[k - 1];
       if (std::abs(spacing - sample_time) > 1e-6 * sample_time) {
-        throw Error(fmt::format("{}: column 't', row {}: spacing {} s differs from the sample time "
-                                "{} s (resample the trajectory first)",
-                                path.string(), k + 1, spacing, sample_time),
-                    "t");
+        throw Error(
+            fmt::format("{}: column 't', data row {}: spacing {} s differs from the sample time "
+                        "{} s (resample the trajectory first)",
+                        path.string(), k + 1, spacing, sample_time),
+            "t");
       }
     }
   }

@@ -526,6 +526,74 @@ case_unwritable_output() {
   expect_no_temporaries
 }
 
+# --- hyst actuator -----------------------------------------------------------------------------
+
+MSMA_CONFIG="${HYST_EXAMPLE_CONFIG_DIR:-}/msma_assumed.json"
+
+# A step reference to 0.5 mm, 0.15 s at the MSMA sample time 1e-4 s.
+write_step_reference() {
+  awk 'BEGIN { print "t,reference"; for (k = 0; k <= 1500; ++k) printf "%.17g,%.17g\n", k * 1e-4, 5e-4 }' >"$1"
+}
+
+# final_error FILE: |reference - measured| in the last row of a simulate output, in micrometres.
+final_error() {
+  awk -F, 'END { e = $2 - $3; if (e < 0) e = -e; printf "%.6f", e * 1e6 }' "$1"
+}
+
+case_actuator_simulate() {
+  write_step_reference r.csv
+  expect_ok "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out o.csv
+  expect_stdout "wrote o.csv" "1501 samples" "pid_feedforward"
+  head -1 o.csv | grep -qx "t,reference,measured,position,current_reference,current,force,voltage" ||
+    fail "unexpected header: $(head -1 o.csv)"
+  [ "$(wc -l <o.csv)" -eq 1502 ] || fail "o.csv has $(wc -l <o.csv) lines, expected 1502"
+  # The closed loop settles on the reference; the uncompensated open loop does not (hysteresis).
+  awk -v e="$(final_error o.csv)" 'BEGIN { exit !(e < 1.0) }' ||
+    fail "pid_feedforward final error $(final_error o.csv) um, expected < 1 um"
+  expect_ok "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out open.csv \
+    --strategy open_loop
+  awk -v e="$(final_error open.csv)" 'BEGIN { exit !(e > 10.0) }' ||
+    fail "open-loop final error $(final_error open.csv) um, expected > 10 um"
+  expect_no_temporaries
+}
+
+case_actuator_compare() {
+  mkdir out
+  local plots=""
+  command -v gnuplot >/dev/null 2>&1 || plots="--no-plots"
+  expect_ok "$HYST" actuator compare --config "$MSMA_CONFIG" --out-dir out $plots
+  expect_stdout "[ASSUMED]" "| step | open_loop |" "| triangle | pid_feedforward |" \
+    "DC gain 6.25e-05 m/V"
+  [ "$(wc -l <out/comparison.csv)" -eq 25 ] || fail "comparison.csv: $(wc -l <out/comparison.csv) lines"
+  grep -q "| sine_10Hz_full | feedforward |" out/comparison.md || fail "comparison.md incomplete"
+  if [ -z "$plots" ]; then
+    expect_png out/tracking_triangle.png
+    expect_png out/error_step.png
+  fi
+  expect_no_temporaries
+}
+
+case_actuator_bad_inputs() {
+  write_step_reference r.csv
+  expect_error 2 "actuator" -- "$HYST" actuator
+  expect_error 2 "--config" -- "$HYST" actuator simulate --reference r.csv --out o.csv
+  expect_error 1 "unknown control strategy 'fast'" -- \
+    "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out o.csv --strategy fast
+  sed 's/"resistance": 2.0/"resistance": -2.0/' "$MSMA_CONFIG" >bad.json
+  expect_error 1 "bad.json: coil.resistance" "must be finite and > 0" -- \
+    "$HYST" actuator compare --config bad.json
+  printf '{"name": "x",\n "sample_time": 1e-4,,}\n' >malformed.json
+  expect_error 1 "malformed.json" "not valid JSON" "line 2" -- \
+    "$HYST" actuator compare --config malformed.json
+  awk 'BEGIN { print "t,reference"; print "0,1e-4"; print "0.001,1e-4" }' >coarse.csv
+  expect_error 1 "coarse.csv" "column 't', data row 2" "sample time" -- \
+    "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference coarse.csv --out o.csv
+  expect_error 1 "missing/o.csv" "does not exist" -- \
+    "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out missing/o.csv
+  expect_error 1 "--out-dir" "does not exist" -- \
+    "$HYST" actuator compare --config "$MSMA_CONFIG" --out-dir nowhere
+}
+
 # --- main -------------------------------------------------------------------------------------
 
 if [ "$#" -ne 1 ] || ! declare -F "case_$1" >/dev/null; then
