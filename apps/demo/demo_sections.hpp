@@ -9,3 +9,8 @@
 // PI fit on measured piezo loops and inverse-PI compensation (piezo_section.cpp).
 std::string piezo_section(const std::filesystem::path& data_dir,
                           const std::filesystem::path& folder);
+
+// Closed-loop control of the simulated MSMA actuator: open loop, inverse feedforward, PID and
+// PID + feedforward compared (actuator_section.cpp); `config_file` is the actuator's JSON.
+std::string actuator_section(const std::filesystem::path& config_file,
+                             const std::filesystem::path& folder);
