@@ -1,6 +1,7 @@
 #include "hyst/actuator/hysteretic_force.hpp"
 
-#include <optional>
+#include <type_traits>
+#include <variant>
 
 #include "../detail/json_fields.hpp"
 #include "../registry/model_entries.hpp"
@@ -22,14 +23,18 @@ Model build(Params params, const std::string& params_path) {
 }  // namespace
 
 std::string_view hysteresis_name(const AnyHysteresis& model) {
-  switch (model.index()) {
-    case 3:
-      return "pi";
-    case 4:
-      return "preisach";
-    default:
-      return "gpi";
-  }
+  return std::visit(
+      [](const auto& held) -> std::string_view {
+        using H = std::decay_t<decltype(held)>;
+        if constexpr (std::is_same_v<H, PrandtlIshlinskii>) {
+          return "pi";
+        } else if constexpr (std::is_same_v<H, Preisach>) {
+          return "preisach";
+        } else {
+          return "gpi";
+        }
+      },
+      model);
 }
 
 AnyHysteresis hysteresis_from_json(const nlohmann::json& document, const std::string& path) {

@@ -240,7 +240,8 @@ TEST(Comparison, RanksTheStrategiesOnTheMsmaActuator) {
 }
 
 TEST(NoAllocation, ClosedLoopStep) {
-  const auto config = msma();
+  auto config = msma();
+  config.plant.noise = {1e-7, 3};  // the noise generator too
   const auto loop = gpi_loop(config);
   auto state = loop.initial_state();
   double current_reference = 0.0;

@@ -16,6 +16,7 @@
 //! to the current range; its anti-windup sees those limits. k, R, L and k_F here are the
 //! controller's model values, which may differ from the plant's (model mismatch).
 
+#include <algorithm>
 #include <span>
 #include <string_view>
 #include <vector>

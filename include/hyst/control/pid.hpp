@@ -21,10 +21,9 @@
 //! The first step takes y[k-1] = y[k] (no derivative kick); start() initialises the integral for
 //! a bumpless switch-on at a given output.
 
+#include <algorithm>
 #include <limits>
 #include <string_view>
-
-#include <algorithm>
 
 namespace hyst::control {
 
