@@ -117,7 +117,7 @@ void bind_actuator(py::module_& module) {
           "position, current_reference, current, force, voltage.")
       .def(
           "compare",
-          [](const ActuatorConfig& c, const std::optional<std::string>& plot_folder) {
+          [](const ActuatorConfig& c, const std::optional<std::filesystem::path>& plot_folder) {
             const auto comparison = compare_strategies(c, scenario_references(c));
             if (plot_folder) write_comparison_plots(comparison, *plot_folder);
             py::list rows;

@@ -2,6 +2,7 @@
 
 import json
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -63,6 +64,14 @@ def test_comparison_ranks_compensation_above_open_loop(msma):
         assert combined < pid < open_loop, reference
     assert math.isnan(by_key[("triangle", "pid")]["settling_time"])
     assert not math.isnan(by_key[("step", "pid")]["settling_time"])
+
+
+def test_comparison_plots(msma, tmp_path):
+    if shutil.which("gnuplot") is None:
+        pytest.skip("gnuplot not installed")
+    msma.compare(plot_folder=tmp_path)
+    for name in ("tracking_step.png", "error_triangle.png", "tracking_sine_10Hz_half.png"):
+        assert (tmp_path / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_config_from_dict_and_errors():

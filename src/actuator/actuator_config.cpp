@@ -1,6 +1,7 @@
 #include "hyst/actuator/actuator_config.hpp"
 
 #include <optional>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -126,6 +127,24 @@ LoopParams loop_from_json(const nlohmann::json& value, const ActuatorParams& pla
   return loop;
 }
 
+// A GPI is only checked (envelope ordering) on its operating range: the coil's current range
+// must lie inside it.
+void require_current_range_inside(const AnyHysteresis& hysteresis, const Coil::Params& coil) {
+  std::visit(
+      [&](const auto& model) {
+        if constexpr (requires { model.params().input_min; }) {
+          const auto& p = model.params();
+          if (coil.current_min < p.input_min || coil.current_max > p.input_max) {
+            throw Error(
+                fmt::format("coil current range [{}, {}] must lie inside the GPI operating "
+                            "range [{}, {}] (hysteresis.params.input_min/input_max)",
+                            coil.current_min, coil.current_max, p.input_min, p.input_max));
+          }
+        }
+      },
+      hysteresis);
+}
+
 ActuatorConfig parse(const nlohmann::json& document) {
   JsonFields fields(document, "");
   const std::string name = fields.string("name");
@@ -143,6 +162,7 @@ ActuatorConfig parse(const nlohmann::json& document) {
   validate_at("delay", [&] { TransportDelay(plant.delay, plant.sample_time); });
   validate_at("noise", [&] { SensorNoise{plant.noise}; });
   AnyHysteresis hysteresis = hysteresis_from_json(required(fields, "hysteresis"), "hysteresis");
+  require_current_range_inside(hysteresis, plant.coil);
   std::optional<AnyHysteresis> compensator;
   LoopParams loop = loop_from_json(required(fields, "control"), plant, hysteresis, compensator);
   ScenarioParams scenarios = scenarios_from_json(required(fields, "scenarios"));

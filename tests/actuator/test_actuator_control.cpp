@@ -317,6 +317,10 @@ TEST(ActuatorConfig, ErrorsNameTheSourceAndField) {
   broken.erase("mechanics");
   EXPECT_HYST_ERROR(actuator_config_from_json(broken, "a.json"), "mechanics: missing field");
   broken = document;
+  broken["coil"]["current_max"] = 9.0;
+  EXPECT_HYST_ERROR(actuator_config_from_json(broken, "a.json"),
+                    "coil current range [0, 9] must lie inside the GPI operating range [0, 8]");
+  broken = document;
   broken["control"]["compensator_hysteresis"] = {
       {"model", "pi"}, {"params", {{"thresholds", {0.0}}, {"weights", {1.0}}}}};
   EXPECT_HYST_ERROR(actuator_config_from_json(broken, "a.json"), "same kind of model");
@@ -332,6 +336,17 @@ TEST(References, ShapesAndErrors) {
   EXPECT_HYST_ERROR(control::step_reference(1.0, 2.0, 2.0, 1.0, 0.25), "step time");
   EXPECT_HYST_ERROR(control::triangle_reference(1.0, 0.0, 2, 1.0, 0.1), "low");
   EXPECT_HYST_ERROR(control::sine_reference(0.0, 1.0, 1.0, 1.0, 0.0), "sample time");
+}
+
+TEST(References, FromCsv) {
+  const auto folder = std::filesystem::temp_directory_path() / "hyst_test_references";
+  std::filesystem::create_directories(folder);
+  io::write_file_atomically(folder / "r.csv", "t,x\n0,1\n0.5,2\n1.0,4\n");
+  const auto reference = control::reference_from_csv(folder / "r.csv", 0.5);
+  EXPECT_EQ(reference.values, (std::vector<double>{1.0, 2.0, 4.0}));  // the last column
+  EXPECT_EQ(reference.name, "r");
+  EXPECT_HYST_ERROR(control::reference_from_csv(folder / "r.csv", 0.25), "data row 2");
+  std::filesystem::remove_all(folder);
 }
 
 TEST(TrackingMetrics, FromAHandMadeResponse) {
