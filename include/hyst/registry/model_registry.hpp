@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/data/preprocessing.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
@@ -41,6 +42,9 @@ struct FitRequest {
   std::span<const double> validation_input;   //!< empty: no held-out record
   std::span<const double> validation_output;  //!< same length as validation_input
   nlohmann::json options = nlohmann::json::object();
+  //! Preparation of the fit record (cycles, drift, resampling) applied by fit_model(); the
+  //! validation record is used as given.
+  data::Preprocessing preprocessing;
 };
 
 struct FitOutcome {
@@ -65,6 +69,11 @@ struct ModelEntry {
 
   bool can_fit() const { return static_cast<bool>(fit); }
 };
+
+//! Fits `entry`'s model: prepares request.input/output as request.preprocessing asks
+//! (data::preprocess()), calls entry.fit on the prepared record and lists the steps applied in the
+//! report's `preprocessing`. Throws hyst::Error when the model has no fitter.
+FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request);
 
 class ModelRegistry {
  public:
