@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
 #include "hyst/io/mat_file.hpp"
 
 namespace hyst::cli {
@@ -21,17 +22,44 @@ bool has_mat_extension(const std::filesystem::path& path) {
 
 }  // namespace
 
-DataSource::DataSource(std::filesystem::path path)
+std::optional<io::AixacctFile> read_if_aixacct(const std::filesystem::path& path) {
+  if (has_mat_extension(path)) return std::nullopt;
+  const std::string text = io::read_file(path);
+  if (!io::looks_like_aixacct(text)) return std::nullopt;
+  return io::parse_aixacct(text, path.string());
+}
+
+DataSource::DataSource(std::filesystem::path path, std::optional<std::size_t> table)
     : path_(std::move(path)), mat_(has_mat_extension(path_)) {
   if (mat_) {
     names_ = io::list_mat_variables(path_);
   } else {
-    table_ = io::read_csv(path_);
+    const std::string text = io::read_file(path_);
+    if (io::looks_like_aixacct(text)) {
+      aixacct_ = io::parse_aixacct(text, path_.string());
+      const auto& tables = aixacct_->measurements;
+      if (!table && tables.size() > 1) {
+        throw Error(fmt::format(
+            "{}: the aixACCT export has {} measurement tables; choose one with --table (see "
+            "'hyst data info {}')",
+            path_.string(), tables.size(), path_.string()));
+      }
+      const auto& chosen = table ? aixacct_->measurement(*table) : tables.front();
+      aixacct_table_ = static_cast<std::size_t>(&chosen - tables.data());
+      table_ = chosen.to_table(path_.string());
+    } else {
+      table_ = io::parse_csv(text, path_.string());
+    }
     names_ = table_.names;
+  }
+  if (table && !aixacct_) {
+    throw Error(fmt::format("{}: --table chooses a table of an aixACCT export; this file is {}",
+                            path_.string(), mat_ ? "a MAT file" : "CSV"));
   }
 }
 
 bool DataSource::has_column(std::string_view name) const {
+  if (aixacct_ && aixacct_->measurements[aixacct_table_].find(name)) return true;
   return std::find(names_.begin(), names_.end(), name) != names_.end();
 }
 
@@ -43,6 +71,7 @@ std::string DataSource::column_list() const {
 }
 
 std::vector<double> DataSource::column(std::string_view name) const {
+  if (aixacct_) return aixacct_->measurements[aixacct_table_].column(name, path_.string()).values;
   if (!has_column(name)) {
     throw Error(fmt::format("{}: no {} '{}' ({}: {})", path_.string(), mat_ ? "variable" : "column",
                             name, mat_ ? "variables" : "columns", column_list()));

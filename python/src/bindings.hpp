@@ -49,5 +49,6 @@ void bind_signals(py::module_& module);
 void bind_io(py::module_& module);
 void bind_identify(py::module_& module);
 void bind_registry(py::module_& module);
+void bind_data(py::module_& module);
 
 }  // namespace hyst::python

@@ -173,4 +173,5 @@ PYBIND11_MODULE(hyst, module) {
   hyst::python::bind_io(module);
   hyst::python::bind_identify(module);
   hyst::python::bind_registry(module);
+  hyst::python::bind_data(module);
 }
