@@ -553,6 +553,12 @@ case_data_info() {
   grep -E '^  Time +s +401 +0 +1 +0 +0$' "$WORK/stdout" >/dev/null ||
     fail "table 6 Time line: $(grep 'Time' "$WORK/stdout")"
   grep -q "^table 1:" "$WORK/stdout" && fail "--table 6 shows table 1"
+  # Loop figures of P1(V+), against the instrument's own (table 6 metadata: Wloss 46029.4,
+  # Vc+ 1131.47, Vc- -1010.17, Pr+ 9.69639).
+  expect_ok "$HYST" data info "$AIX" --table 6 --loop V+,P1
+  expect_stdout "loop V+ -> P1, samples 0..400: area 46029.4," \
+    "coercive inputs 1131.47 (up), -1010.17 (down); remanent outputs 9.69639 (down)"
+  expect_error 1 "--loop expects two columns" -- "$HYST" data info "$AIX" --loop V+
   expect_ok "$HYST" data info "$AIX" --table 6 --json
   python3 -c "
 import json, sys

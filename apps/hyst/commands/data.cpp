@@ -16,6 +16,7 @@
 #include "../data_source.hpp"
 #include "commands.hpp"
 #include "hyst/data/cycles.hpp"
+#include "hyst/data/loop_metrics.hpp"
 #include "hyst/data/reversal_points.hpp"
 #include "hyst/io/aixacct.hpp"
 #include "hyst/io/csv.hpp"
@@ -28,6 +29,7 @@ struct InfoOptions {
   std::string file;
   std::optional<std::size_t> table;
   double band_fraction = 0.02;
+  std::vector<std::string> loop;  //!< {input, output}: also the loop figures of every cycle
   bool json = false;
 };
 
@@ -122,9 +124,46 @@ std::string count_text(const std::optional<std::size_t>& count) {
   return count ? fmt::format("{}", *count) : std::string("-");
 }
 
+const InfoColumn* find_column(const InfoTable& table, std::string_view name) {
+  for (const auto& column : table.columns) {
+    const auto header = column.unit.empty() ? column.name : column.name + " [" + column.unit + "]";
+    if (column.name == name || header == name) return &column;
+  }
+  return nullptr;
+}
+
+//! The figures of every cycle of the (input, output) loop of a table, or none when the table
+//! lacks one of the columns.
+std::vector<data::LoopMetrics> loop_figures(const InfoTable& table, const InfoOptions& options) {
+  if (options.loop.empty()) return {};
+  const auto* input = find_column(table, options.loop[0]);
+  const auto* output = find_column(table, options.loop[1]);
+  if (!input || !output || input->values.size() != output->values.size() ||
+      input->values.size() < 3) {
+    return {};
+  }
+  const auto f = figures(input->values, options.band_fraction);
+  if (!f.cycles) return {};
+  return data::cycle_metrics(input->values, output->values,
+                             options.band_fraction * (f.max - f.min));
+}
+
+std::string crossings_text(const std::vector<data::LevelCrossing>& crossings) {
+  std::string text;
+  for (const auto& crossing : crossings) {
+    text += fmt::format("{}{:.6g} ({})", text.empty() ? "" : ", ", crossing.value,
+                        crossing.direction == data::Direction::ascending ? "up" : "down");
+  }
+  return text.empty() ? std::string("none") : text;
+}
+
 void run_info(const InfoOptions& options) {
   if (!(options.band_fraction > 0.0 && options.band_fraction < 1.0)) {
     throw Error(fmt::format("--band-fraction {} must be > 0 and < 1", options.band_fraction));
+  }
+  if (!options.loop.empty() && options.loop.size() != 2) {
+    throw Error(
+        fmt::format("--loop expects two columns INPUT,OUTPUT, got {}", options.loop.size()));
   }
   std::string format;
   const auto tables = read_tables(options, format);
@@ -152,6 +191,24 @@ void run_info(const InfoOptions& options) {
         }
         entry["columns"].push_back(std::move(c));
       }
+      for (const auto& m : loop_figures(table, options)) {
+        auto crossings = [](const std::vector<data::LevelCrossing>& list) {
+          auto array = nlohmann::json::array();
+          for (const auto& c : list) {
+            array.push_back({{"value", c.value},
+                             {"index", c.index},
+                             {"direction", std::string(data::to_string(c.direction))}});
+          }
+          return array;
+        };
+        entry["loops"].push_back({{"first", m.first},
+                                  {"last", m.last},
+                                  {"area", m.area},
+                                  {"closure_error", m.closure_error},
+                                  {"input_mismatch", m.input_mismatch},
+                                  {"coercive_inputs", crossings(m.coercive)},
+                                  {"remanent_outputs", crossings(m.remanent)}});
+      }
       out["tables"].push_back(std::move(entry));
     }
     fmt::print("{}\n", out.dump(2));
@@ -178,6 +235,13 @@ void run_info(const InfoOptions& options) {
       const auto f = figures(column.values, options.band_fraction);
       fmt::print("  {:<22}{:<9}{:>8}{:>14.6g}{:>14.6g}{:>11}{:>8}\n", column.name, column.unit,
                  column.values.size(), f.min, f.max, count_text(f.reversals), count_text(f.cycles));
+    }
+    for (const auto& m : loop_figures(table, options)) {
+      fmt::print(
+          "  loop {} -> {}, samples {}..{}: area {:.6g}, closure error {:.4g} (input mismatch "
+          "{:.4g}); coercive inputs {}; remanent outputs {}\n",
+          options.loop[0], options.loop[1], m.first, m.last, m.area, m.closure_error,
+          m.input_mismatch, crossings_text(m.coercive), crossings_text(m.remanent));
     }
   }
 }
@@ -220,9 +284,15 @@ void add_data_command(CLI::App& app) {
   info_command->add_option("--band-fraction", info->band_fraction,
                            "Hysteresis band for reversals and cycles, as a fraction of each "
                            "column's range (default 0.02)");
+  info_command
+      ->add_option("--loop", info->loop,
+                   "INPUT,OUTPUT: also the loop figures of every cycle (area, closure error, "
+                   "coercive inputs at output 0, remanent outputs at input 0)")
+      ->delimiter(',');
   info_command->add_flag("--json", info->json, "Print JSON instead of text");
   info_command->footer(R"(Example:
   hyst data info RMN_TRAP_SLOW.dat --table 6
+  hyst data info RMN_TRAP_SLOW.dat --loop V+,P1     loop area, coercive and remanent values
 A column's reversals are its turning points that it leaves by more than the band; a cycle is
 one period: back to the first value, moving in the first direction.)");
   info_command->callback([info] { run_info(*info); });
