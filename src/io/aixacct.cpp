@@ -9,6 +9,7 @@
 
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "line_reader.hpp"
 
 namespace hyst::io {
 namespace {
@@ -88,32 +89,6 @@ std::string column_list(const AixacctTable& table) {
     list += (list.empty() ? "" : ", ") + column.header();
   return list.empty() ? std::string("none") : list;
 }
-
-//! Physical lines with 1-based numbers; a trailing '\r' is removed.
-class Lines {
- public:
-  explicit Lines(std::string_view text) : rest_(text) {}
-  bool next(std::string_view& line) {
-    if (done_) return false;
-    ++number_;
-    const auto end = rest_.find('\n');
-    line = rest_.substr(0, end);
-    if (end == std::string_view::npos) {
-      done_ = true;
-    } else {
-      rest_.remove_prefix(end + 1);
-      done_ = rest_.empty();
-    }
-    if (line.ends_with('\r')) line.remove_suffix(1);
-    return true;
-  }
-  std::size_t number() const { return number_; }
-
- private:
-  std::string_view rest_;
-  std::size_t number_ = 0;
-  bool done_ = false;
-};
 
 class Parser {
  public:
@@ -256,7 +231,7 @@ class Parser {
     return lines_.next(line);
   }
 
-  Lines lines_;
+  detail::LineReader lines_;
   std::string_view source_;
   AixacctFile file_;
 };
@@ -312,7 +287,7 @@ const AixacctTable& AixacctFile::measurement(std::size_t number) const {
 }
 
 bool looks_like_aixacct(std::string_view text) {
-  Lines lines(text);
+  detail::LineReader lines(text);
   std::string_view line;
   if (!lines.next(line)) return false;
   const auto first = trim(line);
