@@ -585,6 +585,12 @@ case_data_extract_fit() {
   # Headers with units work as column names too.
   expect_ok "$HYST" data extract "$AIX" --table 6 --columns "Time [s],P1 [uC/cm2]" --out p.csv
   [ "$(head -1 p.csv)" = "Time [s],P1 [uC/cm2]" ] || fail "p.csv header: $(head -1 p.csv)"
+  # .mat variables and CSV columns extract the same way.
+  local mat="$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
+  expect_ok "$HYST" data extract "$mat" --columns Vplus_1kv,Displacement_1kv --out mat.csv
+  expect_stdout "wrote mat.csv: 2 columns (Vplus_1kv, Displacement_1kv), 401 rows"
+  expect_ok "$HYST" data extract mat.csv --columns Displacement_1kv --out one.csv
+  [ "$(cut -d, -f2 mat.csv)" = "$(cat one.csv)" ] || fail "one.csv is not column 2 of mat.csv"
   # Fit straight from the export, with the preprocessing listed in the report.
   expect_ok "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --detrend \
     --resample input-grid:20 --cycles 1 --option operators=8 --out m.json --report m.txt
@@ -627,6 +633,13 @@ case_bad_data_files() {
   expect_error 1 "unknown resampling method 'spline'" -- \
     "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --resample spline --out m.json
   [ ! -e m.json ] || fail "m.json written by a failed fit"
+  write_mat lengths.mat a 12 b 11
+  expect_error 1 "lengths.mat: column 'b' has 11 samples but 'a' has 12" -- \
+    "$HYST" data extract lengths.mat --columns a,b --out ab.csv
+  expect_ok "$HYST" data info lengths.mat
+  # a = 0, 1, 2, 3, 4, 0, 1, ...: maxima at samples 4 and 9, minima at 5 and 10; 2 periods of 5.
+  grep -E '^  a +12 +0 +4 +4 +2$' "$WORK/stdout" >/dev/null ||
+    fail "lengths.mat a line: $(grep '^  a' "$WORK/stdout")"
 }
 
 # --- main -------------------------------------------------------------------------------------
