@@ -5,10 +5,12 @@
 //! A cycle starts at the record's first sample, with anchor level a = input[0] and the direction d
 //! of the first branch, and ends at the first sample at which the input - after it has passed one
 //! maximum and one minimum reversal (reversal_points.hpp) - is back at or beyond a while moving in
-//! direction d. The next cycle starts at that sample (cycles share their boundary sample) and
-//! closes the same way, against the same anchor level, so that drift of the input does not move
-//! the cycles. Minor loops inside a cycle belong to it: a branch that turns back before reaching
-//! the anchor level extends the cycle by one more pair of reversals.
+//! direction d (a turning point that stops within `band` short of a counts as back, so that a
+//! record starting at an extreme closes at each noisy return to it). The next cycle starts at that
+//! sample (cycles share their boundary sample) and closes the same way, against the same anchor
+//! level, so that drift of the input does not move the cycles. Minor loops inside a cycle belong to
+//! it: a branch that turns back before reaching the anchor level extends the cycle by one more pair
+//! of reversals.
 //!
 //! A record that stops just short of the anchor level (a measurement of one period usually does)
 //! closes its last cycle at the last sample when that sample is on a d-branch, past both
