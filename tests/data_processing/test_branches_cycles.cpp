@@ -67,6 +67,18 @@ TEST(Cycles, RecordStartingAtItsMinimumClosesAtEachMinimum) {
   EXPECT_EQ(cycles(through_nodes({0, 10, -10, 0, 10, 0}), 1.5).size(), 1U);
 }
 
+TEST(Cycles, NoisyReturnsToAStartingExtremeStillClose) {
+  // From the minimum -10 up and down twice, with +-0.3 on every sample: the later minima miss
+  // -10 by up to 0.3 in either direction, within the band 1.5.
+  auto input = through_nodes({-10, 10, -10, 10, -10});
+  for (std::size_t k = 1; k < input.size(); ++k)
+    input[k] += (k % 3 == 0 ? 0.3 : (k % 3 == 1 ? -0.3 : 0.1));
+  const auto found = cycles(input, 1.5);
+  ASSERT_EQ(found.size(), 2U);
+  EXPECT_NEAR(static_cast<double>(found[0].last), 40.0, 1.0);
+  EXPECT_EQ(found[1].last, input.size() - 1);
+}
+
 TEST(Cycles, OnePeriodStoppingShortOfItsStartClosesAtTheRecordEnd) {
   // Starts at 2 rising, ends at 0 rising: 2 short of the anchor, like a measured period.
   const auto input = through_nodes({2, 10, -10, 0});
