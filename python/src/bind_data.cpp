@@ -62,6 +62,16 @@ void bind_aixacct(py::module_& io_module) {
           "name"_a, "The values of the column named 'V+' or headed 'V+ [V]'.")
       .def("metadata_number", &io::AixacctTable::metadata_number, "key"_a,
            "A numeric metadata entry, or None.")
+      .def(
+          "to_dict",
+          [](const io::AixacctTable& t) {
+            py::dict columns;
+            for (const auto& column : t.columns)
+              columns[py::str(column.header())] = readonly_copy(column.values);
+            return columns;
+          },
+          "{header: float64 array} in file order, like hyst.io.read_csv() (hyst.io.write_csv() "
+          "writes it as CSV).")
       .def("__repr__", [](const io::AixacctTable& t) {
         return fmt::format("<AixacctTable {}: {} columns, {} rows>", t.number, t.columns.size(),
                            t.rows());

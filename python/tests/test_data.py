@@ -126,6 +126,9 @@ def test_read_aixacct(data_dir):
     assert "401 values" in repr(column) and "401 rows" in repr(table)
     np.testing.assert_array_equal(table.column("V+ [V]"), column.values)
     assert table.column("V+").max() == pytest.approx(table.metadata_number("Vmax+ [V]"), abs=0.01)
+    columns = table.to_dict()
+    assert list(columns)[:2] == ["Time [s]", "V+ [V]"]
+    np.testing.assert_array_equal(columns["D1 [nm]"], table.column("D1"))
     with pytest.raises(hyst.Error, match="no measurement table 11"):
         export.measurement(11)
     with pytest.raises(hyst.Error, match=r"s.dat:1: not an aixACCT export"):
