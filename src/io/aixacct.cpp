@@ -166,11 +166,12 @@ class Parser {
       if (!lines_.next(line) || trim(line).empty()) {
         throw Error(fmt::format("{}: the table ends before its column header line", table_where()));
       }
-      const auto content = trim(line);
-      if (content.find('\t') != std::string_view::npos) {
+      // A tab marks the column header, even a lone trailing one after a single column.
+      if (line.find('\t') != std::string_view::npos) {
         header_found = true;
         break;
       }
+      const auto content = trim(line);
       const auto colon = content.find(':');
       if (colon == std::string_view::npos || colon == 0) {
         throw Error(fmt::format("{}: '{}' is neither 'key: value' metadata nor a column header",

@@ -110,6 +110,10 @@ TEST(Aixacct, ParsesASmallExport) {
     crlf += c;
   }
   EXPECT_EQ(parse_aixacct(crlf, "crlf.dat").measurements[0].column("V+").values[1], -1.0);
+  // A single column: its header is recognised by the trailing tab.
+  const auto single = parse_aixacct("XResult\n\nT\nTable 1\nA: b\nTime [s]\t\n1\t\n2\t\n", "x");
+  ASSERT_EQ(single.measurements.size(), 1U);
+  EXPECT_EQ(single.measurements[0].column("Time").values[1], 2.0);
   EXPECT_TRUE(looks_like_aixacct(kSmall));
   EXPECT_FALSE(looks_like_aixacct("t,v\n1,2\n"));
   EXPECT_FALSE(looks_like_aixacct("PiezoResult\n\nt,v\n"));
