@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "bindings.hpp"
+#include "hyst/data/backbone.hpp"
 #include "hyst/data/branches.hpp"
 #include "hyst/data/corrections.hpp"
 #include "hyst/data/cycles.hpp"
@@ -290,6 +291,28 @@ void bind_data(py::module_& module) {
         return data::cycles(as_span(input, "input"), band);
       },
       "input"_a, "band"_a, "Complete periods of the input.");
+
+  py::class_<data::Backbone>(d, "Backbone",
+                             "Centre line and half-width of a loop on a common input grid.")
+      .def_property_readonly("input",
+                             [](const data::Backbone& b) { return readonly_copy(b.input); })
+      .def_property_readonly("ascending",
+                             [](const data::Backbone& b) { return readonly_copy(b.ascending); })
+      .def_property_readonly("descending",
+                             [](const data::Backbone& b) { return readonly_copy(b.descending); })
+      .def_property_readonly("centre",
+                             [](const data::Backbone& b) { return readonly_copy(b.centre); })
+      .def_property_readonly("half_width",
+                             [](const data::Backbone& b) { return readonly_copy(b.half_width); });
+  d.def(
+      "backbone",
+      [](const InputArray& input, const InputArray& output, double band, std::size_t first,
+         std::size_t last, std::size_t points) {
+        return data::backbone(as_span(input, "input"), as_span(output, "output"), band, first, last,
+                              points);
+      },
+      "input"_a, "output"_a, "band"_a, "first"_a, "last"_a, "points"_a = 101,
+      "Backbone (centre line) and half-width of the loop of samples first..last.");
 
   bind_loops(d);
   bind_corrections(d);

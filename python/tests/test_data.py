@@ -148,3 +148,18 @@ def test_fit_with_preprocessing(data_dir):
     assert plain.preprocessing == []
     with pytest.raises(hyst.Error, match="cycles 2 requested"):
         hyst.fit("pi", v, d, cycles="2")
+
+
+def test_backbone_of_an_ellipse():
+    a, b, phi, n = 2.0, 3.0, 0.7, 4000
+    t = 2 * np.pi * np.arange(n + 1) / n
+    x, y = a * np.sin(t), b * np.sin(t - phi)
+    bone = data.backbone(x, y, band=0.1, first=0, last=n, points=21)
+    assert isinstance(bone, data.Backbone) and bone.input.size == 21
+    inner = np.abs(bone.input) < 0.95 * a
+    np.testing.assert_allclose(bone.centre[inner], b / a * np.cos(phi) * bone.input[inner],
+                               atol=1e-5)
+    np.testing.assert_allclose(
+        bone.half_width[inner], b * np.sin(phi) * np.sqrt(1 - bone.input[inner] ** 2 / a**2),
+        atol=1e-5)
+    np.testing.assert_allclose(bone.descending - bone.ascending, 2 * bone.half_width, atol=1e-12)
