@@ -275,6 +275,10 @@ void add_data_command(CLI::App& app) {
   auto* command = app.add_subcommand(
       "data", "Inspect measured data files (CSV, .mat, aixACCT) and extract columns as CSV.");
   command->require_subcommand(1);
+  command->footer(R"(Examples:
+  hyst data info RMN_TRAP_SLOW.dat --table 6 --loop V+,P1
+  hyst data extract RMN_TRAP_SLOW.dat --table 6 --columns V+,P1 --out p.csv
+Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
 
   auto info = std::make_shared<InfoOptions>();
   auto* info_command = command->add_subcommand(
@@ -311,8 +315,8 @@ one period: back to the first value, moving in the first direction.)");
       ->delimiter(',');
   extract_command->add_option("--out", extract->out, "CSV file to write")->required();
   extract_command->footer(R"(Example:
-  hyst data extract RMN_TRAP_SLOW.dat --table 6 --columns V+,D1 --out pzt.csv
-  hyst fit pi --data pzt.csv --input V+ --output D1 --out pzt.json)");
+  hyst data extract RMN_TRAP_SLOW.dat --table 6 --columns V+,P1 --out p.csv
+  hyst fit pi --data p.csv --input V+ --output P1 --out p.json)");
   extract_command->callback([extract] { run_extract(*extract); });
 }
 

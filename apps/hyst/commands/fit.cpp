@@ -284,7 +284,7 @@ void add_fit_command(CLI::App& app) {
       --validation-data MeasurementData.mat --validation-input Vplus_1kv \
       --validation-output Displacement_1kv --option operators=12 \
       --option initial_state=periodic --out pzt.json --report pzt.txt
-  hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output D1 \
+  hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output P1 \
       --detrend --resample input-grid:20 --out pzt.json
 Preprocessing (--detrend, then --cycles, then --resample) applies to --data only; the fit
 report lists the steps applied.
