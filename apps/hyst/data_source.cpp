@@ -40,9 +40,10 @@ DataSource::DataSource(std::filesystem::path path, std::optional<std::size_t> ta
       const auto& tables = aixacct_->measurements;
       if (!table && tables.size() > 1) {
         throw Error(fmt::format(
-            "{}: the aixACCT export has {} measurement tables; choose one with --table (see "
-            "'hyst data info {}')",
-            path_.string(), tables.size(), path_.string()));
+            "{}: the aixACCT export has {} measurement tables; choose one with --table (fit), "
+            "or extract one with 'hyst data extract {} --table N --out t.csv' (see 'hyst data "
+            "info {}')",
+            path_.string(), tables.size(), path_.string(), path_.string()));
       }
       const auto& chosen = table ? aixacct_->measurement(*table) : tables.front();
       aixacct_table_ = static_cast<std::size_t>(&chosen - tables.data());
