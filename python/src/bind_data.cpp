@@ -2,9 +2,12 @@
 // figures, offset and drift removal, resampling, preparation for fitting; and hyst.io's reader
 // of aixACCT exports.
 
+#include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -15,9 +18,12 @@
 #include "hyst/data/cycles.hpp"
 #include "hyst/data/loop_metrics.hpp"
 #include "hyst/data/preprocessing.hpp"
+#include "hyst/data/record_info.hpp"
 #include "hyst/data/resampling.hpp"
 #include "hyst/data/reversal_points.hpp"
 #include "hyst/io/aixacct.hpp"
+#include "hyst/io/csv.hpp"
+#include "hyst/io/data_file.hpp"
 
 namespace hyst::python {
 namespace {
@@ -221,11 +227,51 @@ void bind_corrections(py::module_& d) {
       "('input-grid', 'arc-length'); band 0 = 2 % of the input range.");
 }
 
+//! hyst.data.info and hyst.data.extract: 'hyst data info --json' and 'hyst data extract'.
+void bind_files(py::module_& d) {
+  d.def(
+      "info",
+      [](const std::filesystem::path& path, std::optional<std::size_t> table, double band_fraction,
+         std::optional<std::pair<std::string, std::string>> loop) {
+        data::RecordInfoOptions options;
+        options.table = table;
+        options.band_fraction = band_fraction;
+        options.loop = std::move(loop);
+        return json_to_python(data::record_info_json(data::record_info(path, options)));
+      },
+      "path"_a, "table"_a = py::none(), "band_fraction"_a = 0.02, "loop"_a = py::none(),
+      "What a data file (CSV, .mat, aixACCT export) holds, as a dict with the content of 'hyst "
+      "data info --json': its tables, each column's unit, samples, min, max and the counts of "
+      "reversals and cycles with a band of band_fraction x its range; loop=(input, output) adds "
+      "the figures of every cycle of that loop. table chooses one measurement table of an "
+      "aixACCT export.");
+  d.def(
+      "extract",
+      [](const std::filesystem::path& path, const std::vector<std::string>& columns,
+         std::optional<std::size_t> table, std::optional<std::filesystem::path> out) {
+        auto extracted = io::DataFile(path, table).columns_table(columns);
+        if (out) {
+          extracted.source = out->string();
+          io::write_csv(*out, extracted);
+        }
+        py::dict result;
+        for (std::size_t j = 0; j < extracted.cols(); ++j)
+          result[py::str(extracted.names[j])] = to_array(std::move(extracted.columns[j]));
+        return result;
+      },
+      "path"_a, "columns"_a = std::vector<std::string>{}, "table"_a = py::none(),
+      "out"_a = py::none(),
+      "{name: float64 array} of the columns (all when empty; aixACCT columns by name 'V+' or "
+      "header 'V+ [V]') of one table of a data file, like 'hyst data extract'; out also writes "
+      "them as CSV (atomically). Columns must have equal lengths.");
+}
+
 }  // namespace
 
 void bind_data(py::module_& module) {
   auto io_module = module.attr("io").cast<py::module_>();
   bind_aixacct(io_module);
+  module.attr("read_aixacct") = io_module.attr("read_aixacct");
 
   auto d = module.def_submodule(
       "data",
@@ -316,6 +362,7 @@ void bind_data(py::module_& module) {
 
   bind_loops(d);
   bind_corrections(d);
+  bind_files(d);
 }
 
 }  // namespace hyst::python

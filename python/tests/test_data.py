@@ -1,6 +1,10 @@
 """hyst.data and hyst.io.read_aixacct: measured records from the instrument file to the fit."""
 
+import json
 import math
+import os
+import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -163,3 +167,88 @@ def test_backbone_of_an_ellipse():
         bone.half_width[inner], b * np.sin(phi) * np.sqrt(1 - bone.input[inner] ** 2 / a**2),
         atol=1e-5)
     np.testing.assert_allclose(bone.descending - bone.ascending, 2 * bone.half_width, atol=1e-12)
+
+
+def cli_output(*args):
+    """stdout of the hyst command line program ($HYST_CLI, else build/apps/hyst next to the
+    module); the test is skipped without it."""
+    program = Path(os.environ.get("HYST_CLI", Path(hyst.__file__).parents[1] / "apps" / "hyst"))
+    if not program.is_file():
+        pytest.skip(f"hyst command line program not found at {program}")
+    return subprocess.run([str(program), *map(str, args)], check=True, capture_output=True,
+                          text=True).stdout
+
+
+def test_info_is_the_cli_json(data_dir):
+    path = data_dir / "piezo_pzt_aixacct_butterfly" / "RMN_TRAP_SLOW.dat"
+    assert hyst.read_aixacct is io.read_aixacct
+    everything = data.info(path)
+    assert everything == json.loads(cli_output("data", "info", path, "--json"))
+    assert [t["table"] for t in everything["tables"]] == ["summary"] + [
+        f"table {n}" for n in range(1, 11)]
+    assert everything["format"] == ("aixACCT export (PiezoResult), a summary table and 10 "
+                                    "measurement tables")
+    one = data.info(path, table=6, band_fraction=0.05, loop=("V+", "P1 [uC/cm2]"))
+    assert one == json.loads(cli_output("data", "info", path, "--table", 6, "--band-fraction",
+                                        0.05, "--loop", "V+,P1 [uC/cm2]", "--json"))
+    # Known values: the file's own metadata (Vmax+, Vmax-, Wloss, Vc+, Vc-) and one triangle
+    # period of the voltage (a maximum and a minimum, one cycle).
+    table = io.read_aixacct(path).measurement(6)
+    (entry,) = one["tables"]
+    assert entry["table"] == "table 6" and entry["metadata"]["SampleName"] == "TEST_1400V"
+    voltage = next(c for c in entry["columns"] if c["name"] == "V+")
+    assert (voltage["unit"], voltage["samples"], voltage["reversals"], voltage["cycles"]) == (
+        "V", 401, 2, 1)
+    # The metadata holds 6 significant digits.
+    assert voltage["max"] == pytest.approx(table.metadata_number("Vmax+ [V]"), abs=0.005)
+    assert voltage["min"] == pytest.approx(table.metadata_number("Vmax- [V]"), abs=0.005)
+    (loop,) = entry["loops"]
+    assert loop["area"] == pytest.approx(table.metadata_number("Wloss [uJ/cm2]"), abs=0.05)
+    up, down = loop["coercive_inputs"]
+    assert up["direction"] == "ascending" and down["direction"] == "descending"
+    assert up["value"] == pytest.approx(table.metadata_number("Vc+ [V]"), abs=0.005)
+    assert down["value"] == pytest.approx(table.metadata_number("Vc- [V]"), abs=0.005)
+    constant = next(c for c in entry["columns"] if c["name"] == "V-")
+    assert constant["reversals"] is None and constant["cycles"] is None
+
+
+def test_info_of_csv_and_errors(tmp_path):
+    v = triangle(10, 2)
+    io.write_csv(tmp_path / "t.csv", {"v": v, "y": 2 * v})
+    info = data.info(tmp_path / "t.csv", band_fraction=0.1, loop=["v", "y"])
+    assert info == json.loads(cli_output("data", "info", tmp_path / "t.csv", "--band-fraction",
+                                         0.1, "--loop", "v,y", "--json"))
+    assert info["format"] == "CSV, 2 columns"
+    (table,) = info["tables"]
+    assert [(c["name"], c["min"], c["max"], c["reversals"], c["cycles"]) for c in
+            table["columns"]] == [("v", -10.0, 10.0, 4, 2), ("y", -20.0, 20.0, 4, 2)]
+    # y = 2 v encloses no area; the loop passes (0, 0) twice per period.
+    assert [(m["first"], m["last"], m["area"]) for m in table["loops"]] == [(0, 40, 0.0),
+                                                                            (40, 80, 0.0)]
+    with pytest.raises(hyst.Error, match="band fraction 1 must be > 0 and < 1"):
+        data.info(tmp_path / "t.csv", band_fraction=1.0)
+    with pytest.raises(hyst.Error, match=r"t.csv: --table \(Python: table=\) chooses a table"):
+        data.info(tmp_path / "t.csv", table=2)
+
+
+def test_extract_like_the_cli(data_dir, tmp_path):
+    path = data_dir / "piezo_pzt_aixacct_butterfly" / "RMN_TRAP_SLOW.dat"
+    columns = data.extract(path, ["V+", "P1 [uC/cm2]"], table=6, out=tmp_path / "py.csv")
+    assert list(columns) == ["V+", "P1 [uC/cm2]"]
+    table = io.read_aixacct(path).measurement(6)
+    np.testing.assert_array_equal(columns["V+"], table.column("V+"))
+    np.testing.assert_array_equal(columns["P1 [uC/cm2]"], table.column("P1"))
+    cli_output("data", "extract", path, "--table", 6, "--columns", "V+,P1 [uC/cm2]", "--out",
+               tmp_path / "cli.csv")
+    assert (tmp_path / "py.csv").read_bytes() == (tmp_path / "cli.csv").read_bytes()
+    written = io.read_csv(tmp_path / "py.csv")
+    np.testing.assert_array_equal(written["V+"], columns["V+"])
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cli.csv", "py.csv"]  # no temp files
+
+    io.write_csv(tmp_path / "t.csv", {"a": [1.0, 2.0], "b": [3.0, 4.0]})
+    both = data.extract(tmp_path / "t.csv")
+    assert list(both) == ["a", "b"] and both["b"].tolist() == [3.0, 4.0]
+    with pytest.raises(hyst.Error, match="10 measurement tables; choose one with --table N"):
+        data.extract(path, ["V+"])
+    with pytest.raises(hyst.Error, match="table 6: no column 'V9'"):
+        data.extract(path, ["V9"], table=6)

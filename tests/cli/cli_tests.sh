@@ -618,7 +618,7 @@ case_bad_data_files() {
   expect_error 1 "table 6: no column 'V9'" "V+ [V]" -- \
     "$HYST" data extract "$AIX" --table 6 --columns V9 --out x.csv
   printf 'v,y\n0,0\n1,1\n' >small.csv
-  expect_error 1 "small.csv: --table chooses a table of an aixACCT export; this file is CSV" -- \
+  expect_error 1 "small.csv: --table (Python: table=) chooses a table of an aixACCT export; this file is CSV" -- \
     "$HYST" data info small.csv --table 2
   sed '1010s/^[^\t]*\t/abc\t/' "$AIX" >broken.dat
   expect_error 1 "broken.dat:1010: table 3: column 1 ('Time [s]'): 'abc' is not a finite number" -- \
