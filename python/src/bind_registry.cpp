@@ -224,7 +224,9 @@ void bind_registry(py::module_& module) {
       "detrend=True removes drift between cycles, cycles=\"2-3\" keeps those cycles, "
       "resample=\"input-grid\" or \"arc-length\" (step resample_step, 0 = automatic) "
       "resamples each branch; band is the hysteresis band (0 = 2 % of the input range). "
-      "FitReport.preprocessing lists the steps applied.");
+      "detrend also removes the drift of validation_input/validation_output (drift is a "
+      "measurement artefact); cycles and resampling are fit-only. FitReport.preprocessing "
+      "lists the steps applied.");
 }
 
 }  // namespace hyst::python

@@ -154,6 +154,27 @@ def test_fit_with_preprocessing(data_dir):
         hyst.fit("pi", v, d, cycles="2")
 
 
+def test_detrend_reaches_the_validation_record(data_dir):
+    export = io.read_aixacct(data_dir / "piezo_pzt_aixacct_butterfly" / "RMN_TRAP_SLOW.dat")
+    v, p = export.measurement(6).column("V+"), export.measurement(6).column("P1")
+    v5, p5 = export.measurement(5).column("V+"), export.measurement(5).column("P1")
+    _, report = hyst.fit("pi", v, p, v5, p5, detrend=True, resample="input-grid", operators=8)
+    assert report.validation.samples == 401  # resampling is for the fit record only
+    assert report.preprocessing[0].startswith("fit record: linear drift removed")
+    assert report.preprocessing[1].startswith("fit record: resampled per branch")
+    assert report.preprocessing[2].startswith("validation record: linear drift removed between 2")
+    # The same as removing the drift by hand with each record's default band.
+    fit_p = data.remove_drift(v, p, data.default_band(v)).output
+    fit_v, fit_p, _ = data.preprocess(v, fit_p, resample="input-grid")
+    by_hand = data.remove_drift(v5, p5, data.default_band(v5)).output
+    _, manual = hyst.fit("pi", fit_v, fit_p, v5, by_hand, operators=8)
+    assert manual.preprocessing == []
+    assert report.validation.nrmse == pytest.approx(manual.validation.nrmse, rel=1e-12)
+    assert report.fit.nrmse == pytest.approx(manual.fit.nrmse, rel=1e-12)
+    _, raw = hyst.fit("pi", fit_v, fit_p, v5, p5, operators=8)
+    assert raw.validation.nrmse != pytest.approx(manual.validation.nrmse, rel=1e-3)
+
+
 def test_backbone_of_an_ellipse():
     a, b, phi, n = 2.0, 3.0, 0.7, 4000
     t = 2 * np.pi * np.arange(n + 1) / n

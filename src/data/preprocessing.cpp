@@ -30,6 +30,27 @@ std::optional<std::size_t> whole_number(std::string_view text) {
   return value;
 }
 
+//! remove_drift() on the output of `record`, described in one line.
+std::string detrend(PreparedRecord& record, double band) {
+  auto removal = remove_drift(record.input, record.output, band);
+  record.output = std::move(removal.output);
+  return fmt::format(
+      "linear drift removed between {} cycle boundaries (band {:.4g}; largest closure error "
+      "{:.4g} before)",
+      removal.cycles + 1, band, removal.closure_error);
+}
+
+void check_options(const Preprocessing& options) {
+  if (options.band < 0.0 || options.resample_step < 0.0) {
+    throw Error(fmt::format("band = {} and resample step = {} must be >= 0 (0: automatic)",
+                            options.band, options.resample_step));
+  }
+}
+
+double band_of(std::span<const double> input, const Preprocessing& options) {
+  return options.band > 0.0 ? options.band : default_band(input);
+}
+
 }  // namespace
 
 CycleRange cycle_range_from_string(std::string_view text) {
@@ -73,22 +94,12 @@ ResampleMethod resample_method_from_string(std::string_view text) {
 PreparedRecord preprocess(std::span<const double> input, std::span<const double> output,
                           const Preprocessing& options) {
   detail::require_record(input, output, 2);
-  if (options.band < 0.0 || options.resample_step < 0.0) {
-    throw Error(fmt::format("band = {} and resample step = {} must be >= 0 (0: automatic)",
-                            options.band, options.resample_step));
-  }
+  check_options(options);
   PreparedRecord record{{input.begin(), input.end()}, {output.begin(), output.end()}, {}};
   if (!options.any()) return record;
-  const double band = options.band > 0.0 ? options.band : default_band(input);
+  const double band = band_of(input, options);
 
-  if (options.detrend) {
-    auto removal = remove_drift(record.input, record.output, band);
-    record.output = std::move(removal.output);
-    record.steps.push_back(fmt::format(
-        "linear drift removed between {} cycle boundaries (band {:.4g}; largest closure error "
-        "{:.4g} before)",
-        removal.cycles + 1, band, removal.closure_error));
-  }
+  if (options.detrend) record.steps.push_back(detrend(record, band));
   if (options.cycles) {
     const auto found = cycles(record.input, band);
     const auto& range = *options.cycles;
@@ -123,6 +134,22 @@ PreparedRecord preprocess(std::span<const double> input, std::span<const double>
     record.steps.push_back(fmt::format(
         "resampled per branch on {} of step {:.4g} ({} -> {} samples)",
         grid ? "an input grid" : "normalised arc length", step, before, record.input.size()));
+  }
+  return record;
+}
+
+PreparedRecord prepare_validation(std::span<const double> input, std::span<const double> output,
+                                  const Preprocessing& options) {
+  detail::require_record(input, output, 2);
+  check_options(options);
+  PreparedRecord record{{input.begin(), input.end()}, {output.begin(), output.end()}, {}};
+  if (!options.detrend) return record;
+  const double band = band_of(input, options);
+  if (input.size() < 3 || cycles(input, band).empty()) {
+    record.steps.push_back(
+        fmt::format("drift not removed: no complete cycle (band {:.4g}) to measure it on", band));
+  } else {
+    record.steps.push_back(detrend(record, band));
   }
   return record;
 }

@@ -607,6 +607,20 @@ import json
 a = json.load(open('m.json'))['params']; b = json.load(open('m2.json'))['params']
 assert a == b, (a, b)
 " || fail "fit from the export and from the extracted CSV differ"
+  # The validation record loses its drift too, but keeps all its samples (cycles and resampling
+  # are fit-only).
+  expect_ok "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --detrend \
+    --resample input-grid:20 --option operators=8 --validation-data "$AIX" --validation-table 5 \
+    --out m3.json
+  expect_stdout "Preprocessing: fit record: linear drift removed between 2 cycle boundaries" \
+    "; fit record: resampled per branch" \
+    "; validation record: linear drift removed between 2 cycle boundaries"
+  python3 -c "
+import json
+info = json.load(open('m3.json'))['info']
+assert info['validation']['samples'] == 401, info['validation']
+assert info['preprocessing'][-1].startswith('validation record: linear drift'), info
+" || fail "the validation record is not detrended or not complete"
 }
 
 case_bad_data_files() {

@@ -77,5 +77,37 @@ TEST(Preprocess, DefaultBandAndErrors) {
   EXPECT_HYST_ERROR(preprocess(input, input, options), "band = -1");
 }
 
+TEST(PrepareValidation, RemovesDriftOnlyAndSaysWhenItCannot) {
+  const auto input = test::triangle(10, 3);
+  std::vector<double> output(input.size());
+  for (std::size_t k = 0; k < input.size(); ++k)
+    output[k] = input[k] + 0.01 * static_cast<double>(k);  // no loop, pure drift
+
+  Preprocessing options;
+  EXPECT_EQ(prepare_validation(input, output, options).output, output);  // nothing asked
+  options.detrend = true;
+  options.cycles = cycle_range_from_string("2");  // for the fit alone
+  options.resample = ResampleMethod::input_grid;
+  const auto prepared = prepare_validation(input, output, options);
+  EXPECT_EQ(prepared.input, input);
+  ASSERT_EQ(prepared.steps.size(), 1U);
+  // The band is 2 % of this record's range of 20.
+  EXPECT_NE(prepared.steps[0].find("linear drift removed between 4 cycle boundaries (band 0.4; "
+                                   "largest closure error 1.2 before)"),
+            std::string::npos)
+      << prepared.steps[0];
+  for (std::size_t k = 0; k < input.size(); ++k)
+    EXPECT_NEAR(prepared.output[k], input[k], 1e-12);
+
+  // Half a period: no cycle to read the drift at.
+  const std::vector<double> half(input.begin(), input.begin() + 21);
+  const auto kept = prepare_validation(half, half, options);
+  EXPECT_EQ(kept.output, half);
+  ASSERT_EQ(kept.steps.size(), 1U);
+  EXPECT_EQ(kept.steps[0], "drift not removed: no complete cycle (band 0.2) to measure it on");
+  options.band = -1.0;
+  EXPECT_HYST_ERROR(prepare_validation(input, output, options), "band = -1");
+}
+
 }  // namespace
 }  // namespace hyst::data

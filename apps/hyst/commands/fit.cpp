@@ -271,7 +271,8 @@ void add_fit_command(CLI::App& app) {
   command->add_option("--cycles", options->cycles,
                       "Fit only cycles N, N-M or N- (1-based periods of the input)");
   command->add_flag("--detrend", options->detrend,
-                    "Remove linear drift between cycles so that the loop closes");
+                    "Remove linear drift between cycles so that the loop closes, in --data and in "
+                    "the validation record (drift is a measurement artefact)");
   command->add_option("--resample", options->resample,
                       "Resample each branch: input-grid[:STEP] (uniform input) or "
                       "arc-length[:STEP] (uniform normalised arc length)");
@@ -286,8 +287,11 @@ void add_fit_command(CLI::App& app) {
       --option initial_state=periodic --out pzt.json --report pzt.txt
   hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output P1 \
       --detrend --resample input-grid:20 --out pzt.json
-Preprocessing (--detrend, then --cycles, then --resample) applies to --data only; the fit
-report lists the steps applied.
+Preprocessing: --detrend, then --cycles, then --resample on --data. A --validation-data
+record gets the drift removal only (detrend (fit and validation); cycles and resampling are
+fit-only); with --validate-fraction the held-out part is the end of the prepared record. The
+fit report lists the steps applied, marked "fit record:", "validation record:" or "fit and
+held-out validation part:".
 The model file's "info" object holds the fit report; 'hyst info m.json' shows it.
 'hyst models NAME' lists the fit options of a model.)");
   command->callback([options] { run(*options); });

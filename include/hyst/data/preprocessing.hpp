@@ -56,4 +56,12 @@ struct PreparedRecord {
 PreparedRecord preprocess(std::span<const double> input, std::span<const double> output,
                           const Preprocessing& options);
 
+//! A validation record prepared as `options` asks for what is a measurement artefact: its drift
+//! is removed when options.detrend (with options.band, or default_band() of this record), so it
+//! is compared with the model like the fit record; cycles and resampling choose what the fit
+//! sees and are not applied. A record without a complete cycle keeps its drift, and the step
+//! says so. Throws hyst::Error for invalid data.
+PreparedRecord prepare_validation(std::span<const double> input, std::span<const double> output,
+                                  const Preprocessing& options);
+
 }  // namespace hyst::data
