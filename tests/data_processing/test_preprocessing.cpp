@@ -14,6 +14,14 @@
 namespace hyst::data {
 namespace {
 
+// output = input + 0.01 per sample: no loop, pure drift.
+std::vector<double> drifting(const std::vector<double>& input) {
+  std::vector<double> output(input.size());
+  for (std::size_t k = 0; k < input.size(); ++k)
+    output[k] = input[k] + 0.01 * static_cast<double>(k);
+  return output;
+}
+
 TEST(CycleRange, ParsesAndPrints) {
   EXPECT_EQ(cycle_range_from_string("3").first, 3U);
   EXPECT_EQ(cycle_range_from_string("3").last, 3U);
@@ -41,9 +49,7 @@ TEST(Preprocess, NothingAskedGivesTheRecordUnchanged) {
 
 TEST(Preprocess, DetrendThenCyclesThenResample) {
   const auto input = test::triangle(10, 3);
-  std::vector<double> output(input.size());
-  for (std::size_t k = 0; k < input.size(); ++k)
-    output[k] = input[k] + 0.01 * static_cast<double>(k);  // no loop, pure drift
+  const auto output = drifting(input);
 
   Preprocessing options;
   options.band = 1.5;
@@ -79,9 +85,7 @@ TEST(Preprocess, DefaultBandAndErrors) {
 
 TEST(PrepareValidation, RemovesDriftOnlyAndSaysWhenItCannot) {
   const auto input = test::triangle(10, 3);
-  std::vector<double> output(input.size());
-  for (std::size_t k = 0; k < input.size(); ++k)
-    output[k] = input[k] + 0.01 * static_cast<double>(k);  // no loop, pure drift
+  const auto output = drifting(input);
 
   Preprocessing options;
   EXPECT_EQ(prepare_validation(input, output, options).output, output);  // nothing asked
