@@ -1,6 +1,6 @@
 // hyst: the command line of the hyst library. One subcommand per task (models, simulate, fit,
-// invert, plot, info, actuator; apps/hyst/commands/), all built on the model registry and model
-// files.
+// invert, plot, info, actuator, data; apps/hyst/commands/), all built on the model registry and
+// model files.
 //
 // Exit status: 0 on success (and for --help, --version), 1 when the work fails (invalid data or
 // model files, unwritable output, ...), 2 for usage errors (unknown options, missing arguments).
@@ -58,6 +58,7 @@ int run(int argc, char** argv) {
   hyst invert --model m.json --target y.csv --out v.csv --input-min -10 --input-max 10
   hyst plot --data d.csv --x v --y y --kind loop --model m.json --out loop.png
   hyst info m.json
+  hyst data info RMN_TRAP_SLOW.dat              tables, columns, units, reversals, cycles
 Run 'hyst <command> --help' for the options of a command.
 Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: error: ...' on stderr.)");
 
@@ -68,6 +69,7 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   hyst::cli::add_plot_command(app);
   hyst::cli::add_info_command(app);
   hyst::cli::add_actuator_command(app);
+  hyst::cli::add_data_command(app);
 
   try {
     app.parse(argc, argv);

@@ -65,6 +65,8 @@ void bind_identify(py::module_& module) {
       .def_readonly("validation", &FitReport::validation,
                     "ErrorMetrics on held-out samples, or None")
       .def_readonly("seconds", &FitReport::seconds, "wall time of the fit [s]")
+      .def_readonly("preprocessing", &FitReport::preprocessing,
+                    "how the record was prepared before fitting, one line per step")
       .def("brief", &FitReport::brief, "One paragraph.")
       .def("full", &FitReport::full, "A multi-line table of every field.")
       .def("__str__", &FitReport::brief)

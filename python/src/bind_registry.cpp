@@ -185,7 +185,9 @@ void bind_registry(py::module_& module) {
       "fit",
       [](const std::string& name, const InputArray& input, const InputArray& output,
          const std::optional<InputArray>& validation_input,
-         const std::optional<InputArray>& validation_output, const py::kwargs& options) {
+         const std::optional<InputArray>& validation_output, std::optional<std::string> cycles,
+         bool detrend, std::string_view resample, double resample_step, double band,
+         const py::kwargs& options) {
         const auto& entry = registry().find(name);
         if (!entry.can_fit()) {
           throw Error(fmt::format("model '{}' has no fitter", name));
@@ -201,18 +203,30 @@ void bind_registry(py::module_& module) {
           request.validation_output = as_span(*validation_output, "validation_output");
         }
         request.options = python_to_json(options, "");
+        request.preprocessing.band = band;
+        request.preprocessing.detrend = detrend;
+        if (cycles) request.preprocessing.cycles = data::cycle_range_from_string(*cycles);
+        request.preprocessing.resample = data::resample_method_from_string(resample);
+        request.preprocessing.resample_step = resample_step;
         std::optional<FitOutcome> outcome;
         {
           py::gil_scoped_release release;
-          outcome.emplace(entry.fit(request));
+          outcome.emplace(fit_model(entry, request));
         }
         return py::make_tuple(std::move(outcome->model), std::move(outcome->report));
       },
       "name"_a, "input"_a, "output"_a, "validation_input"_a = py::none(),
-      "validation_output"_a = py::none(),
+      "validation_output"_a = py::none(), py::kw_only(), "cycles"_a = py::none(),
+      "detrend"_a = false, "resample"_a = "none", "resample_step"_a = 0.0, "band"_a = 0.0,
       "Fits a registered model by name: returns (Model, FitReport). Keyword options are the "
       "model's fit options (see ModelEntry.fit_options), e.g. operators=20, "
-      "initial_state=\"periodic\".");
+      "initial_state=\"periodic\". The record can be prepared first (hyst.data.preprocess): "
+      "detrend=True removes drift between cycles, cycles=\"2-3\" keeps those cycles, "
+      "resample=\"input-grid\" or \"arc-length\" (step resample_step, 0 = automatic) "
+      "resamples each branch; band is the hysteresis band (0 = 2 % of the input range). "
+      "detrend also removes the drift of validation_input/validation_output (drift is a "
+      "measurement artefact); cycles and resampling are fit-only. FitReport.preprocessing "
+      "lists the steps applied.");
 }
 
 }  // namespace hyst::python

@@ -50,5 +50,6 @@ void bind_io(py::module_& module);
 void bind_identify(py::module_& module);
 void bind_registry(py::module_& module);
 void bind_actuator(py::module_& module);
+void bind_data(py::module_& module);
 
 }  // namespace hyst::python

@@ -174,4 +174,5 @@ PYBIND11_MODULE(hyst, module) {
   hyst::python::bind_identify(module);
   hyst::python::bind_registry(module);
   hyst::python::bind_actuator(module);
+  hyst::python::bind_data(module);
 }

@@ -12,7 +12,7 @@ INHERITED = set(dir(Exception)) | {"name", "value"}
 
 
 def public_names():
-    for module in (hyst, hyst.signals, hyst.io):
+    for module in (hyst, hyst.signals, hyst.io, hyst.data):
         for name in dir(module):
             obj = getattr(module, name)
             if name.startswith("_") or inspect.ismodule(obj):

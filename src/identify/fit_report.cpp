@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
@@ -83,6 +84,9 @@ std::string FitReport::brief() const {
       model, method, to_string(termination), iterations, seconds, message, initial_cost, final_cost,
       parameters, metrics_sentence("Fit", fit));
   if (validation) text += fmt::format(" {}", metrics_sentence("Validation", *validation));
+  if (!preprocessing.empty()) {
+    text += fmt::format(" Preprocessing: {}.", fmt::join(preprocessing, "; "));
+  }
   return text;
 }
 
@@ -101,6 +105,10 @@ std::string FitReport::full() const {
   line("initial cost 0.5*sum(e^2)", fmt::format("{:.6g}", initial_cost));
   line("final cost 0.5*sum(e^2)", fmt::format("{:.6g}", final_cost));
   line("time [s]", fmt::format("{:.3g}", seconds));
+  if (preprocessing.empty()) line("preprocessing", "the record as measured");
+  for (std::size_t i = 0; i < preprocessing.size(); ++i) {
+    line(i == 0 ? "preprocessing" : "", preprocessing[i]);
+  }
   text += "\n";
   text += fmt::format("  {:<12}{:>10}{:>14}{:>12}{:>14}\n", "part", "samples", "RMSE", "NRMSE [%]",
                       "max error");

@@ -12,12 +12,12 @@
 
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "line_reader.hpp"
 
 namespace hyst::io {
 namespace {
 
 constexpr std::string_view kBlank = " \t";
-constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 //! Separators in the order automatic detection prefers them; ' ' stands for runs of blanks.
 constexpr std::string_view kDetectionOrder = "\t;, ";
 
@@ -77,35 +77,6 @@ char detect_separator(std::string_view header) {
   }
   return ' ';
 }
-
-//! Physical lines with their 1-based numbers; a trailing '\r' (CRLF) is removed.
-class LineReader {
- public:
-  explicit LineReader(std::string_view text) : rest_(text) {
-    if (rest_.starts_with(kByteOrderMark)) rest_.remove_prefix(kByteOrderMark.size());
-  }
-
-  bool next(std::string_view& line) {
-    if (finished_) return false;
-    ++number_;
-    const auto end = rest_.find('\n');
-    if (end == std::string_view::npos) {
-      line = rest_;
-      finished_ = true;
-    } else {
-      line = rest_.substr(0, end);
-      rest_.remove_prefix(end + 1);
-    }
-    if (line.ends_with('\r')) line.remove_suffix(1);
-    return true;
-  }
-  std::size_t number() const { return number_; }
-
- private:
-  std::string_view rest_;
-  std::size_t number_ = 0;
-  bool finished_ = false;
-};
 
 //! Parses one field as a finite double; throws naming file, line and column.
 double parse_number(std::string_view field, std::string_view source, std::size_t line,
@@ -253,7 +224,7 @@ void Table::add_column(std::string name, std::vector<double> values) {
 Table parse_csv(std::string_view text, std::string_view source_name,
                 const CsvReadOptions& options) {
   const std::string_view source = source_name;
-  LineReader reader(text);
+  detail::LineReader reader(text);
   std::string_view line;
   std::vector<std::string_view> fields;
 

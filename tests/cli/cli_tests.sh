@@ -594,6 +594,136 @@ case_actuator_bad_inputs() {
     "$HYST" actuator compare --config "$MSMA_CONFIG" --out-dir nowhere
 }
 
+# --- measured data files ----------------------------------------------------------------------
+
+aixacct_file() {
+  AIX="$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/RMN_TRAP_SLOW.dat"
+  if [ ! -f "$AIX" ]; then
+    echo "SKIP: $AIX not found"
+    exit 77
+  fi
+}
+
+case_data_info() {
+  aixacct_file
+  expect_ok "$HYST" data info "$AIX"
+  expect_stdout "aixACCT export (PiezoResult), a summary table and 10 measurement tables" \
+    "summary: 34 columns, 10 rows" "table 10: 13 columns, 401 rows; SampleName TEST_800V" \
+    "Waveform triangle" "Hysteresis Amplitude [V] 1400" "uC/cm2"
+  # The butterfly: the displacement D1 turns twice per voltage period (two lobes).
+  grep -E '^  D1 +nm +401 +-655.562 +990.851 +4 +2$' "$WORK/stdout" >/dev/null ||
+    fail "table 1 D1 line: $(grep -m1 '^  D1' "$WORK/stdout")"
+  # One triangular period per table: V+ has one maximum and one minimum and is one cycle; the
+  # time column never turns.
+  expect_ok "$HYST" data info "$AIX" --table 6
+  grep -E '^  V\+ +V +401 +-1322.53 +1467.32 +2 +1$' "$WORK/stdout" >/dev/null ||
+    fail "table 6 V+ line: $(grep 'V+' "$WORK/stdout")"
+  grep -E '^  Time +s +401 +0 +1 +0 +0$' "$WORK/stdout" >/dev/null ||
+    fail "table 6 Time line: $(grep 'Time' "$WORK/stdout")"
+  grep -q "^table 1:" "$WORK/stdout" && fail "--table 6 shows table 1"
+  # Loop figures of P1(V+), against the instrument's own (table 6 metadata: Wloss 46029.4,
+  # Vc+ 1131.47, Vc- -1010.17, Pr+ 9.69639).
+  expect_ok "$HYST" data info "$AIX" --table 6 --loop V+,P1
+  expect_stdout "loop V+ -> P1, samples 0..400: area 46029.4," \
+    "coercive inputs 1131.47 (up), -1010.17 (down); remanent outputs 9.69639 (down)"
+  expect_error 1 "--loop expects two columns" -- "$HYST" data info "$AIX" --loop V+
+  expect_ok "$HYST" data info "$AIX" --table 6 --json
+  python3 -c "
+import json, sys
+info = json.load(open('$WORK/stdout'))
+v = [c for c in info['tables'][0]['columns'] if c['name'] == 'V+'][0]
+assert (v['unit'], v['samples'], v['reversals'], v['cycles']) == ('V', 401, 2, 1), v
+" || fail "data info --json"
+  # CSV and .mat files too.
+  awk 'BEGIN { print "t,v"; for (k = 0; k <= 80; ++k) { p = k % 40; v = p <= 10 ? p : (p <= 30 ? 20 - p : p - 40); print k "," v } }' >tri.csv
+  expect_ok "$HYST" data info tri.csv
+  expect_stdout "CSV, 2 columns" "table: 2 columns, 81 rows"
+  grep -E '^  v +81 +-10 +10 +4 +2$' "$WORK/stdout" >/dev/null ||
+    fail "tri.csv v line: $(grep '^  v' "$WORK/stdout")"
+  expect_ok "$HYST" data info "$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
+  expect_stdout "MATLAB .mat file, 10 variables" "Vplus_19kv"
+}
+
+case_data_extract_fit() {
+  aixacct_file
+  expect_ok "$HYST" data extract "$AIX" --table 6 --columns V+,D1 --out pzt.csv
+  expect_stdout "wrote pzt.csv: 2 columns (V+, D1), 401 rows"
+  [ "$(head -1 pzt.csv)" = "V+,D1" ] || fail "pzt.csv header: $(head -1 pzt.csv)"
+  [ "$(sed -n 2p pzt.csv)" = "78.234989999999996,0" ] || fail "pzt.csv row 1: $(sed -n 2p pzt.csv)"
+  # Headers with units work as column names too.
+  expect_ok "$HYST" data extract "$AIX" --table 6 --columns "Time [s],P1 [uC/cm2]" --out p.csv
+  [ "$(head -1 p.csv)" = "Time [s],P1 [uC/cm2]" ] || fail "p.csv header: $(head -1 p.csv)"
+  # .mat variables and CSV columns extract the same way.
+  local mat="$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
+  expect_ok "$HYST" data extract "$mat" --columns Vplus_1kv,Displacement_1kv --out mat.csv
+  expect_stdout "wrote mat.csv: 2 columns (Vplus_1kv, Displacement_1kv), 401 rows"
+  expect_ok "$HYST" data extract mat.csv --columns Displacement_1kv --out one.csv
+  [ "$(cut -d, -f2 mat.csv)" = "$(cat one.csv)" ] || fail "one.csv is not column 2 of mat.csv"
+  # Fit straight from the export, with the preprocessing listed in the report.
+  expect_ok "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --detrend \
+    --resample input-grid:20 --cycles 1 --option operators=8 --out m.json --report m.txt
+  expect_stdout "Preprocessing: linear drift removed between 2 cycle boundaries" \
+    "cycles 1 of 1 kept" "resampled per branch on an input grid of step 20 (401 -> "
+  grep -q "preprocessing" m.txt || fail "m.txt does not list the preprocessing"
+  expect_ok "$HYST" info m.json --json
+  expect_stdout '"preprocessing": [' '"table": 6'
+  # The same fit from the extracted CSV gives the same model.
+  expect_ok "$HYST" fit pi --data pzt.csv --input V+ --output D1 --detrend \
+    --resample input-grid:20 --cycles 1 --option operators=8 --out m2.json
+  python3 -c "
+import json
+a = json.load(open('m.json'))['params']; b = json.load(open('m2.json'))['params']
+assert a == b, (a, b)
+" || fail "fit from the export and from the extracted CSV differ"
+  # The validation record loses its drift too, but keeps all its samples (cycles and resampling
+  # are fit-only).
+  expect_ok "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --detrend \
+    --resample input-grid:20 --option operators=8 --validation-data "$AIX" --validation-table 5 \
+    --out m3.json
+  expect_stdout "Preprocessing: fit record: linear drift removed between 2 cycle boundaries" \
+    "; fit record: resampled per branch" \
+    "; validation record: linear drift removed between 2 cycle boundaries"
+  python3 -c "
+import json
+info = json.load(open('m3.json'))['info']
+assert info['validation']['samples'] == 401, info['validation']
+assert info['preprocessing'][-1].startswith('validation record: linear drift'), info
+" || fail "the validation record is not detrended or not complete"
+}
+
+case_bad_data_files() {
+  aixacct_file
+  expect_error 1 "RMN_TRAP_SLOW.dat" "10 measurement tables; choose one with --table" -- \
+    "$HYST" fit pi --data "$AIX" --input V+ --output D1 --out m.json
+  expect_error 1 "no measurement table 11 (tables: 1, 2" -- \
+    "$HYST" data info "$AIX" --table 11
+  expect_error 1 "table 6: no column 'V9'" "V+ [V]" -- \
+    "$HYST" data extract "$AIX" --table 6 --columns V9 --out x.csv
+  printf 'v,y\n0,0\n1,1\n' >small.csv
+  expect_error 1 "small.csv: --table (Python: table=) chooses a table of an aixACCT export; this file is CSV" -- \
+    "$HYST" data info small.csv --table 2
+  sed '1010s/^[^\t]*\t/abc\t/' "$AIX" >broken.dat
+  expect_error 1 "broken.dat:1010: table 3: column 1 ('Time [s]'): 'abc' is not a finite number" -- \
+    "$HYST" data info broken.dat
+  expect_error 1 "--cycles 'x'" "expected N, N-M" -- \
+    "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --cycles x --out m.json
+  expect_error 1 "cycles 2 requested but the record has 1 complete cycles" -- \
+    "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --cycles 2 --out m.json
+  expect_error 1 "--resample 'input-grid:-1'" -- \
+    "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --resample input-grid:-1 \
+    --out m.json
+  expect_error 1 "unknown resampling method 'spline'" -- \
+    "$HYST" fit pi --data "$AIX" --table 6 --input V+ --output D1 --resample spline --out m.json
+  [ ! -e m.json ] || fail "m.json written by a failed fit"
+  write_mat lengths.mat a 12 b 11
+  expect_error 1 "lengths.mat: column 'b' has 11 samples but 'a' has 12" -- \
+    "$HYST" data extract lengths.mat --columns a,b --out ab.csv
+  expect_ok "$HYST" data info lengths.mat
+  # a = 0, 1, 2, 3, 4, 0, 1, ...: maxima at samples 4 and 9, minima at 5 and 10; 2 periods of 5.
+  grep -E '^  a +12 +0 +4 +4 +2$' "$WORK/stdout" >/dev/null ||
+    fail "lengths.mat a line: $(grep '^  a' "$WORK/stdout")"
+}
+
 # --- main -------------------------------------------------------------------------------------
 
 if [ "$#" -ne 1 ] || ! declare -F "case_$1" >/dev/null; then

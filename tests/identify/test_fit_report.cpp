@@ -163,4 +163,19 @@ TEST(DataSplit, RejectsInvalidFractions) {
 }
 
 }  // namespace
+TEST(FitReport, PreprocessingStepsAreListed) {
+  FitReport report = example_report();
+  EXPECT_FALSE(contains(report.brief(), "Preprocessing"));
+  EXPECT_TRUE(contains(report.full(), "the record as measured"));
+  report.preprocessing = {"cycles 2-3 of 4 kept (samples 401..1203)",
+                          "resampled per branch on an input grid of step 20 (803 -> 321 samples)"};
+  EXPECT_TRUE(contains(report.brief(),
+                       " Preprocessing: cycles 2-3 of 4 kept (samples 401..1203); resampled per "
+                       "branch on an input grid of step 20 (803 -> 321 samples)."))
+      << report.brief();
+  const auto full = report.full();
+  EXPECT_TRUE(contains(full, "preprocessing")) << full;
+  EXPECT_TRUE(contains(full, "(803 -> 321 samples)")) << full;
+}
+
 }  // namespace hyst

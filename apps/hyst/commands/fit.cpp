@@ -2,6 +2,7 @@
 // with the fit report in its "info" object.
 
 #include <cmath>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "../data_source.hpp"
 #include "commands.hpp"
+#include "hyst/data/preprocessing.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -32,7 +34,52 @@ struct FitOptions {
   std::string options_json;
   std::vector<std::string> option_pairs;
   std::string report;
+  std::optional<std::size_t> table;
+  std::optional<std::size_t> validation_table;
+  std::string cycles;
+  bool detrend = false;
+  std::string resample;
+  double band = 0.0;
 };
+
+//! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
+data::Preprocessing preprocessing(const FitOptions& options) {
+  data::Preprocessing result;
+  if (!(options.band >= 0.0)) {
+    throw Error(fmt::format("--band {} must be >= 0 (0: 2 % of the input range)", options.band));
+  }
+  result.band = options.band;
+  result.detrend = options.detrend;
+  if (!options.cycles.empty()) {
+    try {
+      result.cycles = data::cycle_range_from_string(options.cycles);
+    } catch (const Error& error) {
+      throw Error(fmt::format("--{}", error.what()));  // "--cycles 'x': expected ..."
+    }
+  }
+  if (!options.resample.empty()) {
+    const auto colon = options.resample.find(':');
+    try {
+      result.resample = data::resample_method_from_string(options.resample.substr(0, colon));
+    } catch (const Error& error) {
+      throw Error(fmt::format("--resample: {}", error.what()));
+    }
+    if (colon != std::string::npos) {
+      const auto text = options.resample.substr(colon + 1);
+      std::size_t used = 0;
+      try {
+        result.resample_step = std::stod(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != text.size() || !(result.resample_step > 0.0)) {
+        throw Error(fmt::format("--resample '{}': the step after ':' must be a number > 0",
+                                options.resample));
+      }
+    }
+  }
+  return result;
+}
 
 //! The fit options: --options (a JSON object), then every --option key=value on top of it. A
 //! value is JSON when it parses as JSON (numbers, true, [0, 0.5], "text"), else a plain string.
@@ -94,7 +141,8 @@ void run(const FitOptions& options) {
   check_output_folder(options.out, "--out");
   if (!options.report.empty()) check_output_folder(options.report, "--report");
 
-  const DataSource data(options.data);
+  const auto prepare = preprocessing(options);
+  const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
 
   FitRequest request;
@@ -104,6 +152,7 @@ void run(const FitOptions& options) {
                               {"input", options.input},
                               {"output", options.output},
                               {"samples", record.input.size()}};
+  if (options.table) data_info["table"] = *options.table;
 
   // Validation: the last part of the record, or a separate record.
   std::optional<ColumnPair> held_out;
@@ -125,7 +174,7 @@ void run(const FitOptions& options) {
     request.validate_fraction = fraction;
     data_info["validation"] = {{"kind", "last part of the record"}, {"fraction", fraction}};
   } else if (!options.validation_data.empty()) {
-    const DataSource validation(options.validation_data);
+    const DataSource validation(options.validation_data, options.validation_table);
     const auto input = options.validation_input.empty() ? options.input : options.validation_input;
     const auto output =
         options.validation_output.empty() ? options.output : options.validation_output;
@@ -137,10 +186,12 @@ void run(const FitOptions& options) {
                                {"input", input},
                                {"output", output},
                                {"samples", held_out->input.size()}};
+    if (options.validation_table) data_info["validation"]["table"] = *options.validation_table;
   }
   request.options = fit_json;
+  request.preprocessing = prepare;
 
-  auto outcome = entry.fit(request);
+  auto outcome = fit_model(entry, request);
   const auto& report = outcome.report;
   if (report.termination == Termination::failed) {
     throw Error(
@@ -161,6 +212,7 @@ void run(const FitOptions& options) {
                          {"data", data_info},
                          {"options", fit_json}};
   if (report.validation) info["validation"] = metrics_json(*report.validation);
+  if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
 
   save_model(options.out, *outcome.model, info);
   if (!options.report.empty()) io::write_file_atomically(options.report, report.full());
@@ -210,12 +262,36 @@ void add_fit_command(CLI::App& app) {
                    "else a string); applied on top of --options")
       ->allow_extra_args(false);
   command->add_option("--report", options->report, "Also write the full fit report (text)");
+  command->add_option("--table", options->table,
+                      "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
+  command
+      ->add_option("--validation-table", options->validation_table,
+                   "Measurement table of an aixACCT --validation-data")
+      ->needs(validation);
+  command->add_option("--cycles", options->cycles,
+                      "Fit only cycles N, N-M or N- (1-based periods of the input)");
+  command->add_flag("--detrend", options->detrend,
+                    "Remove linear drift between cycles so that the loop closes, in --data and in "
+                    "the validation record (drift is a measurement artefact)");
+  command->add_option("--resample", options->resample,
+                      "Resample each branch: input-grid[:STEP] (uniform input) or "
+                      "arc-length[:STEP] (uniform normalised arc length)");
+  command->add_option("--band", options->band,
+                      "Hysteresis band for reversals and cycles [input units] (default: 2 % of "
+                      "the input range)");
   command->footer(R"(Examples:
   hyst fit pi --data d.csv --input v --output y --out m.json --validate-fraction 0.2
   hyst fit pi --data MeasurementData.mat --input Vplus_19kv --output Displacement_19kv \
       --validation-data MeasurementData.mat --validation-input Vplus_1kv \
       --validation-output Displacement_1kv --option operators=12 \
       --option initial_state=periodic --out pzt.json --report pzt.txt
+  hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output P1 \
+      --detrend --resample input-grid:20 --out pzt.json
+Preprocessing: --detrend, then --cycles, then --resample on --data. A --validation-data
+record gets the drift removal only (detrend (fit and validation); cycles and resampling are
+fit-only); with --validate-fraction the held-out part is the end of the prepared record. The
+fit report lists the steps applied, marked "fit record:", "validation record:" or "fit and
+held-out validation part:".
 The model file's "info" object holds the fit report; 'hyst info m.json' shows it.
 'hyst models NAME' lists the fit options of a model.)");
   command->callback([options] { run(*options); });

@@ -21,6 +21,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hyst {
 
@@ -66,8 +67,12 @@ struct FitReport {
   ErrorMetrics fit;            //!< on the samples used for fitting
   std::optional<ErrorMetrics> validation;  //!< on held-out samples, when there were any
   double seconds = 0.0;                    //!< wall time of the fit [s]
+  //! How the measured record was prepared before fitting, one line per step in the order applied
+  //! (cycles selected, drift removed, resampled; see hyst/data/preprocessing.hpp); empty when it
+  //! was used as measured.
+  std::vector<std::string> preprocessing;
 
-  //! One paragraph: model, method, termination, cost, fit and validation error.
+  //! One paragraph: model, method, termination, cost, fit and validation error, preprocessing.
   std::string brief() const;
   //! A multi-line text table of every field.
   std::string full() const;

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/data/preprocessing.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
@@ -41,6 +42,10 @@ struct FitRequest {
   std::span<const double> validation_input;   //!< empty: no held-out record
   std::span<const double> validation_output;  //!< same length as validation_input
   nlohmann::json options = nlohmann::json::object();
+  //! Preparation of the record (drift, cycles, resampling) applied by fit_model(). A separate
+  //! validation record gets the drift removal only (data::prepare_validation()); a held-out
+  //! fraction is the end of the prepared record.
+  data::Preprocessing preprocessing;
 };
 
 struct FitOutcome {
@@ -65,6 +70,14 @@ struct ModelEntry {
 
   bool can_fit() const { return static_cast<bool>(fit); }
 };
+
+//! Fits `entry`'s model: prepares request.input/output as request.preprocessing asks
+//! (data::preprocess()) and a separate validation record by data::prepare_validation(), calls
+//! entry.fit on the prepared records and lists the steps applied in the report's `preprocessing`
+//! ("fit record: ...", "validation record: ...", or "fit and held-out validation part: ..." when
+//! a fraction is held out; unprefixed without validation). Throws hyst::Error when the model has
+//! no fitter.
+FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request);
 
 class ModelRegistry {
  public:

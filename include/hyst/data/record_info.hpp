@@ -1,0 +1,66 @@
+#pragma once
+//! \file
+//! What a measured data file holds, as 'hyst data info' and hyst.data.info() show it: its tables
+//! (aixACCT summary and measurement tables, the one CSV table, or a MAT file's variables), each
+//! column's unit, length and range, the reversal points and cycles of each column with a
+//! hysteresis band of `band_fraction` x its range, and optionally the loop figures of every cycle
+//! of an (input, output) pair of columns (loop_metrics.hpp).
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hyst/data/loop_metrics.hpp"
+
+namespace hyst::data {
+
+struct RecordInfoOptions {
+  std::optional<std::size_t> table;  //!< only this measurement table of an aixACCT export
+  double band_fraction = 0.02;       //!< hysteresis band as a fraction of each column's range
+  //! {input, output} columns (by name or "name [unit]" header): also the figures of each cycle.
+  std::optional<std::pair<std::string, std::string>> loop;
+};
+
+struct ColumnInfo {
+  std::string name;
+  std::string unit;  //!< "" without a unit
+  std::size_t samples = 0;
+  std::string problem;  //!< why a MAT variable has no values (a matrix, text ...); "" otherwise
+  double min = 0.0, max = 0.0;  //!< 0 without samples
+  //! Counts with the band; none for constant columns and columns of fewer than 2 samples.
+  std::optional<std::size_t> reversals, cycles;
+};
+
+struct TableInfo {
+  std::string title;  //!< "table 3", "summary", "table" (CSV), "variables" (MAT)
+  //! Metadata worth a glance (aixACCT: sample, waveform, frequency, amplitude), in file order.
+  std::vector<std::pair<std::string, std::string>> metadata;
+  std::vector<ColumnInfo> columns;
+  std::size_t rows = 0;            //!< samples of the first column
+  std::vector<LoopMetrics> loops;  //!< one per cycle of the loop columns, when asked and present
+};
+
+struct RecordInfo {
+  std::string file;
+  std::string format;  //!< e.g. "CSV, 3 columns", "aixACCT export (PiezoResult), ..."
+  double band_fraction = 0.02;
+  std::vector<TableInfo> tables;
+};
+
+//! Reads the file (io::DataFile's rules for its kind) and describes it. Throws hyst::Error for an
+//! unreadable file, a band_fraction outside (0, 1), a table that does not exist or a table asked
+//! of a file other than an aixACCT export.
+RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOptions& options);
+
+//! {"file", "format", "band_fraction", "tables": [{"table", "metadata"?, "columns": [{"name",
+//! "unit", "samples", "problem"? | "min", "max", "reversals", "cycles"}], "loops"?: [{"first",
+//! "last", "area", "closure_error", "input_mismatch", "coercive_inputs", "remanent_outputs"}]}]}
+//! where counts are null when not defined and crossings are {"value", "index", "direction"}.
+nlohmann::json record_info_json(const RecordInfo& info);
+
+}  // namespace hyst::data

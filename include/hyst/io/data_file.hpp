@@ -1,0 +1,68 @@
+#pragma once
+// Named columns of a measured data file, as the command line and hyst.data read them: a CSV table
+// (hyst/io/csv.hpp), the vector variables of a MATLAB .mat file (hyst/io/mat_file.hpp), or one
+// table of an aixACCT export (hyst/io/aixacct.hpp). A ".mat" extension (any case) means a MAT file;
+// other files are aixACCT exports when their text starts like one (io::looks_like_aixacct), CSV
+// otherwise.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hyst/io/aixacct.hpp"
+#include "hyst/io/csv.hpp"
+
+namespace hyst::io {
+
+class DataFile {
+ public:
+  //! Reads a CSV file or an aixACCT export completely, or lists the variables of a MAT file;
+  //! throws hyst::Error naming the file (and line and column for syntax errors). `table` chooses
+  //! the measurement table of an aixACCT export (1-based as in the file); it may be omitted when
+  //! the export has only one, and must be omitted for other files.
+  explicit DataFile(std::filesystem::path path, std::optional<std::size_t> table = {});
+
+  const std::filesystem::path& path() const { return path_; }
+  bool is_mat() const { return mat_; }
+  //! The whole export when the file is an aixACCT export, else nullptr.
+  const AixacctFile* aixacct() const { return aixacct_ ? &*aixacct_ : nullptr; }
+  //! Column (variable) names in file order.
+  const std::vector<std::string>& columns() const { return names_; }
+  bool has_column(std::string_view name) const;
+
+  //! The values of one column; throws hyst::Error "d.csv: no column 'x' (columns: t, v, y)", or
+  //! for MAT files the reader's message naming the variable (not a vector, not finite, ...).
+  //! An aixACCT column is found by its name ("V+") or its header ("V+ [V]").
+  std::vector<double> column(std::string_view name) const;
+
+  //! The column to use for an option: `given` when not empty (it must exist); otherwise the only
+  //! column of the file, or `preferred` when the file has a column of that name. Throws
+  //! hyst::Error listing the columns and naming `option` when neither applies.
+  std::string choose(std::string_view given, std::string_view preferred,
+                     std::string_view option) const;
+
+  //! "t, v, y".
+  std::string column_list() const;
+
+  //! The columns `names` (every column when empty) as a table named by `names`; throws
+  //! hyst::Error when a column is missing or the columns differ in length.
+  Table columns_table(const std::vector<std::string>& names) const;
+
+ private:
+  std::filesystem::path path_;
+  bool mat_ = false;
+  Table table_;  //!< CSV and aixACCT (the chosen table, named by headers)
+  std::optional<AixacctFile> aixacct_;
+  std::size_t aixacct_table_ = 0;  //!< index into aixacct_->measurements
+  std::vector<std::string> names_;
+};
+
+//! The aixACCT export in `path` when the file is one (by its content, see io::looks_like_aixacct),
+//! else nullopt (also for .mat files, which are not read). Throws hyst::Error when the file cannot
+//! be read or the export is malformed.
+std::optional<AixacctFile> read_if_aixacct(const std::filesystem::path& path);
+
+}  // namespace hyst::io

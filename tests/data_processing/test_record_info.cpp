@@ -1,0 +1,109 @@
+// record_info(): what 'hyst data info' and hyst.data.info() report about a data file, on a CSV
+// file with exactly known figures and on the aixACCT export against the instrument's metadata.
+
+#include "hyst/data/record_info.hpp"
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/expect_error.hpp"
+#include "../support/temp_folder_test.hpp"
+#include "hyst/io/aixacct.hpp"
+#include "hyst/io/csv.hpp"
+#include "synthetic_records.hpp"
+
+namespace hyst::data {
+namespace {
+
+class RecordInfoTest : public test::TempFolderTest {
+ protected:
+  // v: triangle of peak 10, two periods (81 samples); y = 2 v; c: constant.
+  std::filesystem::path write_triangle() {
+    io::Table table;
+    const auto v = test::triangle(10, 2);
+    std::vector<double> y, c(v.size(), 3.0);
+    for (const double value : v)
+      y.push_back(2.0 * value);
+    table.add_column("v", v);
+    table.add_column("y", y);
+    table.add_column("c", c);
+    const auto path = dir_ / "t.csv";
+    io::write_csv(path, table);
+    return path;
+  }
+};
+
+TEST_F(RecordInfoTest, CsvColumnsWithKnownFigures) {
+  const auto path = write_triangle();
+  RecordInfoOptions options;
+  options.band_fraction = 0.1;
+  options.loop.emplace("v", "y");
+  const auto info = record_info(path, options);
+  EXPECT_EQ(info.format, "CSV, 3 columns");
+  ASSERT_EQ(info.tables.size(), 1U);
+  const auto& table = info.tables.front();
+  EXPECT_EQ(table.title, "table");
+  EXPECT_EQ(table.rows, 81U);
+  ASSERT_EQ(table.columns.size(), 3U);
+  const auto& v = table.columns[0];
+  EXPECT_EQ(v.samples, 81U);
+  EXPECT_EQ(v.min, -10.0);
+  EXPECT_EQ(v.max, 10.0);
+  EXPECT_EQ(v.reversals, 4U);  // maxima at 10, 50, minima at 30, 70
+  EXPECT_EQ(v.cycles, 2U);
+  EXPECT_EQ(table.columns[1].max, 20.0);
+  EXPECT_FALSE(table.columns[2].reversals);  // constant: no band from its range
+  // y = 2 v encloses no area; one loop per period.
+  ASSERT_EQ(table.loops.size(), 2U);
+  EXPECT_EQ(table.loops[1].first, 40U);
+  EXPECT_EQ(table.loops[1].last, 80U);
+  EXPECT_EQ(table.loops[0].area, 0.0);
+
+  const auto json = record_info_json(info);
+  EXPECT_EQ(json["band_fraction"], 0.1);
+  EXPECT_EQ(json["tables"][0]["columns"][0]["reversals"], 4);
+  EXPECT_TRUE(json["tables"][0]["columns"][2]["cycles"].is_null());
+  EXPECT_EQ(json["tables"][0]["loops"].size(), 2U);
+  EXPECT_FALSE(json["tables"][0].contains("metadata"));
+
+  options.loop.emplace("v", "missing");  // no such column: no loop figures, no error
+  EXPECT_TRUE(record_info(path, options).tables.front().loops.empty());
+}
+
+TEST_F(RecordInfoTest, Errors) {
+  const auto path = write_triangle();
+  RecordInfoOptions options;
+  options.band_fraction = 0.0;
+  EXPECT_HYST_ERROR(record_info(path, options), "band fraction 0 must be > 0 and < 1");
+  options.band_fraction = 0.02;
+  options.table = 2;
+  EXPECT_HYST_ERROR(record_info(path, options), "chooses a table of an aixACCT export");
+  EXPECT_HYST_ERROR(record_info(dir_ / "none.csv", {}), "none.csv");
+}
+
+TEST(RecordInfo, AixacctTableAgainstTheInstrumentsFigures) {
+  const std::string file = HYST_SHARED_DATA_DIR "/piezo_pzt_aixacct_butterfly/RMN_TRAP_SLOW.dat";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  RecordInfoOptions options;
+  options.table = 6;
+  options.loop.emplace("V+ [V]", "P1");
+  const auto info = record_info(file, options);
+  ASSERT_EQ(info.tables.size(), 1U);
+  const auto& table = info.tables.front();
+  EXPECT_EQ(table.title, "table 6");
+  ASSERT_FALSE(table.metadata.empty());
+  EXPECT_EQ(table.metadata.front().first, "SampleName");
+  const auto metadata = io::read_aixacct(file).measurement(6);
+  const auto& voltage = table.columns[1];
+  EXPECT_EQ(voltage.name, "V+");
+  EXPECT_NEAR(voltage.max, *metadata.metadata_number("Vmax+ [V]"), 0.005);
+  EXPECT_EQ(voltage.reversals, 2U);
+  EXPECT_EQ(voltage.cycles, 1U);
+  ASSERT_EQ(table.loops.size(), 1U);
+  EXPECT_NEAR(table.loops[0].area, *metadata.metadata_number("Wloss [uJ/cm2]"), 0.05);
+}
+
+}  // namespace
+}  // namespace hyst::data
