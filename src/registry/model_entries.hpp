@@ -8,5 +8,10 @@ namespace hyst::detail {
 ModelEntry prandtl_ishlinskii_entry();
 ModelEntry generalized_prandtl_ishlinskii_entry();
 ModelEntry preisach_entry();
+ModelEntry ikuta_sma_entry();
+ModelEntry krasnoselskii_pokrovskii_entry();
+ModelEntry maxwell_slip_entry();
+ModelEntry modified_prandtl_ishlinskii_entry();
+ModelEntry rate_dependent_prandtl_ishlinskii_entry();
 
 }  // namespace hyst::detail
