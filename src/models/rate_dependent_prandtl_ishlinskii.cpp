@@ -1,5 +1,6 @@
 #include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -48,7 +49,22 @@ RateDependentPrandtlIshlinskii::State RateDependentPrandtlIshlinskii::make_state
     std::vector<double> play, double input, double rate) const {
   require_finite(input, "rate-dependent PI state input");
   require_finite(rate, "rate-dependent PI state rate");
-  return State{classical_.make_state(std::move(play)).play, input, rate};
+  require_same_size(play.size(), "rate-dependent PI state w", size(),
+                    "rate-dependent PI thresholds r");
+  // After a step every play lies within its current threshold of the input.
+  const double widening = params_.rate_gain * std::abs(rate);
+  for (std::size_t j = 0; j < play.size(); ++j) {
+    require_finite(play[j], fmt::format("rate-dependent PI state w[{}]", j));
+    const double limit = params_.thresholds[j] + (j > 0 ? widening : 0.0);
+    const double slack = 1e-12 * std::max({1.0, std::abs(input), std::abs(play[j])});
+    if (std::abs(play[j] - input) > limit + slack) {
+      throw Error(
+          fmt::format("rate-dependent PI state w[{}] = {} is more than its threshold {} "
+                      "from the input {}: no input history reaches this state",
+                      j, play[j], limit, input));
+    }
+  }
+  return State{std::move(play), input, rate};
 }
 
 RateDependentPrandtlIshlinskii::Params rate_dependent_pi_exponential(double alpha, double rho,

@@ -108,8 +108,10 @@ TEST(RateDependentPrandtlIshlinskii, RejectsInvalidParameters) {
   params.thresholds[0] = 0.1;
   EXPECT_HYST_ERROR(RateDependentPrandtlIshlinskii{params}, "must be 0");
   EXPECT_HYST_ERROR(rate_dependent_pi_exponential(0, 1, 0, 3, 0, kTs), "alpha = 0");
-  const RateDependentPrandtlIshlinskii model(rate_dependent_pi_exponential(0.1, 1, 0, 2, 0, kTs));
+  const RateDependentPrandtlIshlinskii model(
+      rate_dependent_pi_exponential(0.1, 1, 0, 2, 0.01, kTs));
   EXPECT_HYST_ERROR(model.make_state({0, 0, 1.0}, 0, 0), "no input history reaches this state");
+  EXPECT_NO_THROW(model.make_state({0, 0, 1.0}, 0, 100));  // threshold 0.2 + 0.01 * 100 = 1.2
 }
 
 }  // namespace

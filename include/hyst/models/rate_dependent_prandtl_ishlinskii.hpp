@@ -62,8 +62,8 @@ class RateDependentPrandtlIshlinskii {
   State initial_state() const { return State{std::vector<double>(size(), 0.0), 0.0, 0.0}; }
   //! At rest at v0 (every play centred, zero rate).
   State state_at_rest(double input) const;
-  //! A given state; throws hyst::Error unless the plays are reachable (as for the PI model) and
-  //! the input and rate are finite.
+  //! A given state; throws hyst::Error unless the values are finite and every play lies within
+  //! its current threshold r_j + beta |rate| of the input (as after any step).
   State make_state(std::vector<double> play, double input, double rate) const;
 
   double output(const State& state) const {
