@@ -9,3 +9,7 @@
 // PI fit on measured piezo loops and inverse-PI compensation (piezo_section.cpp).
 std::string piezo_section(const std::filesystem::path& data_dir,
                           const std::filesystem::path& folder);
+
+// The seed paper's comparison of Ikuta's, the PI and the Preisach model on one input with
+// internal loops (seed_comparison_section.cpp); needs no data.
+std::string seed_comparison_section(const std::filesystem::path& folder);
