@@ -32,11 +32,7 @@ struct IkutaSmaCodec {
     const auto branch = fields.has("branch") ? fields.parsed("branch", ikuta_branch_from_string)
                                              : IkutaSma::Branch::rest;
     const double scale = fields.number_or("scale", -1.0);
-    try {
-      return model.make_state(fraction, input, branch, scale);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path(), error.what()));
-    }
+    return state_at(fields, [&] { return model.make_state(fraction, input, branch, scale); });
   }
   static std::size_t parameter_count(const Model&) { return 6; }
   static std::string describe(const Model& model) {

@@ -26,11 +26,7 @@ struct KpCodec {
   }
   static Model::State state_from_json(const Model& model, JsonFields& fields) {
     auto kernels = fields.numbers("kernels");
-    try {
-      return model.make_state(std::move(kernels));
-    } catch (const Error& error) {
-      throw Error(fields.path_of("kernels") + ": " + error.what());
-    }
+    return state_at(fields, [&] { return model.make_state(std::move(kernels)); });
   }
   static std::size_t parameter_count(const Model& model) { return model.kernel_count() + 1; }
   static std::string describe(const Model& model) {

@@ -34,11 +34,7 @@ struct MaxwellSlipCodec {
   static Model::State state_from_json(const Model& model, JsonFields& fields) {
     auto deflection = fields.numbers("deflection");
     const double input = fields.number("input");
-    try {
-      return model.make_state(std::move(deflection), input);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path(), error.what()));
-    }
+    return state_at(fields, [&] { return model.make_state(std::move(deflection), input); });
   }
   static std::size_t parameter_count(const Model& model) { return 2 * model.size() + 2; }
   static std::string describe(const Model& model) {

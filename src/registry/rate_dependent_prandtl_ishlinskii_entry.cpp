@@ -27,11 +27,7 @@ struct RateDependentPiCodec {
     auto play = fields.numbers("play");
     const double input = fields.number("input");
     const double rate = fields.number("rate");
-    try {
-      return model.make_state(std::move(play), input, rate);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path(), error.what()));
-    }
+    return state_at(fields, [&] { return model.make_state(std::move(play), input, rate); });
   }
   static std::size_t parameter_count(const Model& model) { return model.size() + 2; }
   static std::string describe(const Model& model) {
