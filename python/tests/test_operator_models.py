@@ -86,6 +86,11 @@ def test_rate_dependent_pi_loops_widen_with_frequency():
         vl, yl = v[-period - 1:], y[-period - 1:]
         areas.append(abs(np.sum(vl[:-1] * yl[1:] - vl[1:] * yl[:-1])) / 2)
     assert areas[0] < areas[1] < areas[2]
+    # Weights by NNLS for the known rate gain, from the highest-frequency record.
+    fitted, report = hyst.fit("rate_dependent_pi", v, y, thresholds=params["thresholds"],
+                              rate_gain=0.01, sample_time=1e-4)
+    assert report.fit.rmse < 1e-9
+    np.testing.assert_allclose(fitted.params["weights"], params["weights"], atol=1e-7)
     classical = hyst.Model("pi", {"thresholds": params["thresholds"], "weights": params["weights"]})
     v = decaying()
     np.testing.assert_allclose(

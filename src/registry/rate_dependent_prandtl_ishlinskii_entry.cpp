@@ -1,8 +1,10 @@
-// Registry entry of the rate-dependent Prandtl-Ishlinskii model: its model-file form. No inverse,
-// no fitter.
+// Registry entry of the rate-dependent Prandtl-Ishlinskii model: its model-file form and its
+// weight fit (fixed thresholds and rate gain). No inverse.
 
 #include <fmt/format.h>
 
+#include "held_out_validation.hpp"
+#include "hyst/identify/fit_rate_dependent_prandtl_ishlinskii.hpp"
 #include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
@@ -62,13 +64,34 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   return make_dynamic_model<RateDependentPiCodec>(std::move(params), state_json);
 }
 
+FitOutcome fit(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  RateDependentPiFitOptions options;
+  options.operators = fields.count_or("operators", options.operators);
+  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
+  options.rate_gain = fields.number_or("rate_gain", options.rate_gain);
+  options.sample_time = fields.number_or("sample_time", options.sample_time);
+  options.rate_filter = fields.number_or("rate_filter", options.rate_filter);
+  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
+  options.min_linear_weight = fields.number_or("min_linear_weight", options.min_linear_weight);
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  auto result = fit_rate_dependent_prandtl_ishlinskii(request.input, request.output, options);
+  add_held_out_validation(request, result.model, result.model.initial_state(), result.report);
+  auto initial = result.model.initial_state();
+  return {std::make_unique<ModelAdapter<RateDependentPiCodec>>(std::move(result.model),
+                                                               std::move(initial)),
+          std::move(result.report)};
+}
+
 }  // namespace
 
 ModelEntry rate_dependent_prandtl_ishlinskii_entry() {
   ModelEntry entry;
   entry.name = std::string(RateDependentPiCodec::name);
   entry.description =
-      "rate-dependent PI: play thresholds r_j + beta |dv/dt|, loops widen with frequency";
+      "rate-dependent PI: play thresholds r_j + beta |dv/dt|, loops widen with frequency; "
+      "weights by NNLS for a fixed beta";
   entry.parameters = {
       {"thresholds", "array of numbers", "input units",
        "nominal (zero-rate) half-widths 0 = r_0 < r_1 < ..."},
@@ -78,7 +101,17 @@ ModelEntry rate_dependent_prandtl_ishlinskii_entry() {
       {"rate_filter", "number", "s", "time constant >= 0 of the rate low-pass (default 0)"},
       {"offset", "number", "output units", "y_off (default 0)"},
   };
+  entry.fit_options = {
+      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
+      {"thresholds", "array of numbers", "input units", "fixed nominal thresholds (uniform)"},
+      {"rate_gain", "number", "s", "fixed beta >= 0 (0: the classical PI)"},
+      {"sample_time", "number", "s", "Ts of the record (1)"},
+      {"rate_filter", "number", "s", "rate low-pass time constant (0)"},
+      {"fit_offset", "boolean", "", "fit the output offset (true)"},
+      {"min_linear_weight", "number", "", "lower bound of p_0, keeps p_0 > 0"},
+  };
   entry.create = &create;
+  entry.fit = &fit;
   entry.example_params = {{"thresholds", {0.0, 0.2, 0.4, 0.6}},
                           {"weights", {1.0, 0.6, 0.4, 0.2}},
                           {"rate_gain", 0.002},

@@ -10,6 +10,7 @@
 #include "../support/expect_error.hpp"
 #include "../support/test_signals.hpp"
 #include "hyst/core/simulate.hpp"
+#include "hyst/identify/fit_rate_dependent_prandtl_ishlinskii.hpp"
 #include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
 
 namespace hyst {
@@ -94,6 +95,34 @@ TEST(RateDependentPrandtlIshlinskii, RateFilterDelaysTheThresholds) {
   EXPECT_NEAR(state.rate, 10.0 / 11.0, 1e-12);
   model.step(state, 1e-3);
   EXPECT_NEAR(state.rate, 10.0 / 11.0 * (10.0 / 11.0), 1e-12);
+}
+
+TEST(RateDependentPrandtlIshlinskii, FitRecoversWeightsForAKnownRateGain) {
+  auto params = rate_dependent_pi_exponential(0.1, 1.0, 0.5, 6, 0.02, kTs);
+  params.offset = -0.3;
+  const RateDependentPrandtlIshlinskii truth(params);
+  // Sines of three frequencies one after the other: the thresholds move with the rate.
+  std::vector<double> v;
+  for (double f : {2.0, 10.0, 30.0}) {
+    const auto part = sine(f, 3);
+    v.insert(v.end(), part.begin(), part.end());
+  }
+  auto state = truth.initial_state();
+  const auto y = simulate(truth, state, v);
+  const auto fit = fit_rate_dependent_prandtl_ishlinskii(v, y,
+                                                         {.thresholds = params.thresholds,
+                                                          .rate_gain = 0.02,
+                                                          .sample_time = kTs,
+                                                          .min_linear_weight = 1e-12,
+                                                          .validate_fraction = 0.2});
+  EXPECT_LT(fit.report.fit.rmse, 1e-9);
+  EXPECT_LT(fit.report.validation->rmse, 1e-9);
+  for (std::size_t j = 0; j < params.weights.size(); ++j)
+    EXPECT_NEAR(fit.model.params().weights[j], params.weights[j], 1e-8) << "j = " << j;
+  // The classical PI (beta = 0) cannot follow the frequency-dependent loops as well.
+  const auto classical = fit_rate_dependent_prandtl_ishlinskii(
+      v, y, {.thresholds = params.thresholds, .sample_time = kTs});
+  EXPECT_GT(classical.report.fit.rmse, 100 * fit.report.fit.rmse);
 }
 
 TEST(RateDependentPrandtlIshlinskii, RejectsInvalidParameters) {
