@@ -8,12 +8,12 @@
 //!     kappa_ij[k] = max( rho_a(v[k] - s_i), min( rho_a(v[k] - s_j), kappa_ij[k-1] ) ),  i >= j
 //!     y[k]        = y_off + sum_{i >= j} mu_ij kappa_ij[k]
 //!
-//! Kernel (i, j) switches up along a ramp from -1 at v = s_i to +1 at s_i + a and down from +1 at
-//! s_j + a to -1 at s_j (s_j <= s_i). Grid: N cells of width D = (upper - lower)/N, thresholds
-//! s_k = lower + k D (k = 0..N-1), ramp width a = ramp_cells D (default one cell): with one cell
-//! every kernel is +1 for v >= upper and -1 for v <= lower, so the output saturates at y_off +-
-//! sum mu there, and a -> 0 gives the Preisach relay grid. N(N+1)/2 kernels, stored at index
-//! i(i+1)/2 + j like the Preisach relays.
+//! Kernel (i, j) (kp_kernel.hpp) switches up along a ramp from -1 at v = s_i to +1 at s_i + a and
+//! down from +1 at s_j + a to -1 at s_j (s_j <= s_i). Grid: N cells of width D = (upper - lower)/N,
+//! thresholds s_k = lower + k D (k = 0..N-1), ramp width a = ramp_cells D (default one cell): with
+//! one cell every kernel is +1 for v >= upper and -1 for v <= lower, so the output saturates at
+//! y_off +- sum mu there, and a -> 0 gives the Preisach relay grid. N(N+1)/2 kernels, stored at
+//! index i(i+1)/2 + j like the Preisach relays.
 //!
 //! Parameters: levels N >= 1, lower < upper [input units], weights mu_ij >= 0 [output units],
 //! ramp_cells > 0 [-], offset y_off [output units]. Initial state: every kernel at -1 (negative
@@ -29,6 +29,8 @@
 #include <cstddef>
 #include <span>
 #include <vector>
+
+#include "hyst/operators/kp_kernel.hpp"
 
 namespace hyst {
 
@@ -73,7 +75,7 @@ class KrasnoselskiiPokrovskii {
     const std::size_t n = params_.levels;
     double* __restrict rho = state.ridge.data();
     for (std::size_t k = 0; k < n; ++k)
-      rho[k] = std::clamp(-1.0 + (input - thresholds_[k]) * two_over_ramp_, -1.0, 1.0);
+      rho[k] = kp_ridge(input - thresholds_[k], two_over_ramp_);
     const double* __restrict mu = params_.weights.data();
     double* __restrict kappa = state.kernels.data();
     double sum = 0.0;
@@ -81,7 +83,7 @@ class KrasnoselskiiPokrovskii {
     for (std::size_t i = 0; i < n; ++i) {
       const double up = rho[i];
       for (std::size_t j = 0; j <= i; ++j, ++index) {
-        kappa[index] = std::max(up, std::min(rho[j], kappa[index]));
+        kappa[index] = kp_kernel_step(up, rho[j], kappa[index]);
         sum += mu[index] * kappa[index];
       }
     }

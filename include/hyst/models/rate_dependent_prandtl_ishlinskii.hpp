@@ -18,7 +18,8 @@
 //!
 //! Parameters: nominal thresholds 0 = r_0 < r_1 < ... [input units], weights p_j, rate gain
 //! beta >= 0 [s], sample time Ts > 0 [s], rate filter time constant T_f >= 0 [s], offset y_off.
-//! With beta = 0 (or at zero rate) it is the classical PrandtlIshlinskii, sample for sample.
+//! With beta = 0 (or at zero rate) it is the classical PrandtlIshlinskii, sample for sample (up
+//! to the rounding of a different summation order).
 //! State: play outputs w_j (default 0), the previous input and the filtered rate (default 0 at
 //! v = 0). Not rate independent: the output depends on the sample time; noise on v makes the
 //! thresholds jitter (use T_f). The inverse (Al Janaideh & Krejci 2013) is not provided.
