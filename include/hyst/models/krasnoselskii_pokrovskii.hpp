@@ -30,6 +30,8 @@
 #include <span>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "hyst/operators/kp_kernel.hpp"
 
 namespace hyst {
@@ -76,17 +78,17 @@ class KrasnoselskiiPokrovskii {
     double* __restrict rho = state.ridge.data();
     for (std::size_t k = 0; k < n; ++k)
       rho[k] = kp_ridge(input - thresholds_[k], two_over_ramp_);
-    const double* __restrict mu = params_.weights.data();
     double* __restrict kappa = state.kernels.data();
-    double sum = 0.0;
-    std::size_t index = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    // Update first (a loop the compiler vectorises), then Eigen's vectorised dot product: a fused
+    // loop would keep the written order of the additions and run scalar.
+    for (std::size_t i = 0, row = 0; i < n; row += ++i) {
       const double up = rho[i];
-      for (std::size_t j = 0; j <= i; ++j, ++index) {
-        kappa[index] = kp_kernel_step(up, rho[j], kappa[index]);
-        sum += mu[index] * kappa[index];
-      }
+      for (std::size_t j = 0; j <= i; ++j)
+        kappa[row + j] = kp_kernel_step(up, rho[j], kappa[row + j]);
     }
+    const auto count = static_cast<Eigen::Index>(params_.weights.size());
+    const double sum = Eigen::Map<const Eigen::VectorXd>(params_.weights.data(), count)
+                           .dot(Eigen::Map<const Eigen::VectorXd>(kappa, count));
     return params_.offset + sum;
   }
 
