@@ -72,7 +72,9 @@ ModifiedPiFit fit_modified_prandtl_ishlinskii(std::span<const double> input,
   const auto m = static_cast<Eigen::Index>(parts.fit_input.size());
   Eigen::MatrixXd A(m, static_cast<Eigen::Index>(n + above + below));
   Eigen::VectorXd b(m);
-  auto state = probe.initial_state();
+  const bool periodic = options.initial_state == PiFitOptions::InitialState::periodic;
+  const auto initial = periodic ? pi_periodic_state(probe, input) : probe.initial_state();
+  auto state = initial;
   std::vector<double> zone(d.size());
   for (Eigen::Index k = 0; k < m; ++k) {
     const auto sample = static_cast<std::size_t>(k);
@@ -122,12 +124,13 @@ ModifiedPiFit fit_modified_prandtl_ishlinskii(std::span<const double> input,
   }
   params.dead_zone = DeadZoneSuperposition(std::move(inverse_map)).inverse().params();
   params.offset = y_off;
-  ModifiedPiFit result{ModifiedPrandtlIshlinskii(std::move(params)), {}};
+  ModifiedPiFit result{ModifiedPrandtlIshlinskii(std::move(params)), {}, {}};
+  result.initial_state = result.model.make_state(initial.play);
   result.report = detail::weight_fit_report(
       "modified_pi",
       "constrained least squares (NNLS) on PI weights and inverse dead-zone slopes, equation "
       "error",
-      solution, n + above + below + 1, result.model, result.model.initial_state(), parts, start);
+      solution, n + above + below + 1, result.model, result.initial_state, parts, start);
   return result;
 }
 

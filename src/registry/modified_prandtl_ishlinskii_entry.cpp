@@ -106,14 +106,24 @@ FitOutcome fit(const FitRequest& request) {
   }
   if (fields.has("output_offset")) options.output_offset = fields.number("output_offset");
   options.min_weight = fields.number_or("min_weight", options.min_weight);
+  if (fields.has("initial_state")) {
+    options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
+  }
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_modified_prandtl_ishlinskii(request.input, request.output, options);
-  add_held_out_validation(request, result.model, result.model.initial_state(), result.report);
-  auto initial = result.model.initial_state();
-  return {
-      std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model), std::move(initial)),
-      std::move(result.report)};
+  // A held-out record starts like the fitted one: virgin, or in its own periodic state.
+  const bool periodic = options.initial_state == PiFitOptions::InitialState::periodic;
+  add_held_out_validation(
+      request, result.model,
+      periodic && !request.validation_input.empty()
+          ? result.model.make_state(
+                pi_periodic_state(result.model.hysteresis(), request.validation_input).play)
+          : result.model.initial_state(),
+      result.report);
+  return {std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model),
+                                                          std::move(result.initial_state)),
+          std::move(result.report)};
 }
 
 }  // namespace
@@ -141,6 +151,7 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
        "thresholds of the inverse dead-zone map around the offset, containing 0"},
       {"output_offset", "number", "output units", "y_off (default: mid-range of the output)"},
       {"min_weight", "number", "", "relative lower bound of p_0 and of the map's slopes (1e-6)"},
+      {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
   };
   entry.create = &create;
   entry.fit = &fit;

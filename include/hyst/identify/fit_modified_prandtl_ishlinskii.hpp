@@ -20,13 +20,16 @@
 //! Defaults: thresholds as fit_prandtl_ishlinskii (uniform up to half the input range); y_off =
 //! mid-range of the measured output; dead-zone thresholds d'_i = +-i h/(l+1), i = 1..l, h = the
 //! distance from y_off to the output's max (min) - they are in output units relative to y_off.
-//! Initial state: every play at 0 (virgin).
+//! Initial state: every play at 0 (virgin), or, for a record that is one period in steady state,
+//! the periodic state of the PI part (the plays after running the input once; exact, see
+//! fit_prandtl_ishlinskii.hpp).
 
 #include <cstddef>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
 
@@ -39,12 +42,16 @@ struct ModifiedPiFitOptions {
   //! d'_i of the inverse map S' [output units, relative to y_off], increasing, containing 0.
   std::vector<double> dead_zone_thresholds{};
   std::optional<double> output_offset = std::nullopt;  //!< y_off; not set = mid-range of output
-  double min_weight = 1e-6;        //!< relative lower bound of p_0 and of the slopes of S', > 0
+  double min_weight = 1e-6;  //!< relative lower bound of p_0 and of the slopes of S', > 0
+  //! virgin (plays at 0) or periodic (the record is one period in steady state).
+  PiFitOptions::InitialState initial_state = PiFitOptions::InitialState::virgin;
   double validate_fraction = 0.0;  //!< held out at the end of the record, [0, 1)
 };
 
 struct ModifiedPiFit {
   ModifiedPrandtlIshlinskii model;
+  //! The play states at the first sample of the record (all 0 for virgin).
+  ModifiedPrandtlIshlinskii::State initial_state;
   FitReport report;  //!< model "modified_pi", method "constrained least squares (NNLS) ..."
 };
 
