@@ -70,6 +70,15 @@ def test_modified_pi_inverse_round_trip_and_fit():
     np.testing.assert_allclose(v_back, v, atol=1e-12)
     fitted, fit_report = hyst.fit("modified_pi", v, y, operators=8, dead_zones=3)
     assert fitted.has_inverse() and fit_report.fit.nrmse < 0.02
+    # One period of a periodic excitation: the fitted model starts in the periodic state.
+    period = np.sin(2 * np.pi * np.arange(500) / 500) * 1.5
+    model.reset()
+    model.simulate(period)
+    steady = model.simulate(period)
+    periodic, periodic_report = hyst.fit("modified_pi", period, steady, operators=8,
+                                         initial_state="periodic")
+    assert periodic_report.fit.nrmse < 0.02
+    assert periodic.state["play"] != [0.0] * 8
     with pytest.raises(hyst.Error, match=r"params.dead_zone_thresholds"):
         hyst.Model("modified_pi", dict(MODIFIED_PI, dead_zone_thresholds=[-1, 0.5, 0, 1, 2, 3, 4]))
 
