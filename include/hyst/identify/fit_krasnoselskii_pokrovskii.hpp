@@ -6,8 +6,8 @@
 //! From the known initial state (every kernel at -1) the kernel outputs kappa_ij[k] follow from
 //! the input alone, and the output is linear in the weights:
 //!
-//!     y[k] = y_off + sum_{i >= j} mu_ij kappa_ij[k],   min_{mu >= 0, y_off} sum_k (y_meas[k] -
-//!     y[k])^2
+//!     y[k] = y_off + sum_{i >= j} mu_ij kappa_ij[k]
+//!     min_{mu >= 0, y_off} sum_k (y_meas[k] - y[k])^2
 //!
 //! mu >= 0 keeps the fitted model monotone. Kernels the input never moves (reversals never
 //! inside their cells) give constant or coinciding columns: their weights split arbitrarily, the

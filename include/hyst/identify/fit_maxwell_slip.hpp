@@ -4,8 +4,8 @@
 //! displacements D_i the element deflections delta_i[k] (stop operators) follow from the
 //! position alone, and the force is linear in the stiffnesses:
 //!
-//!     F[k] = F_off + k_lin x[k] + sum_i k_i delta_i[k],    min_{k_i >= 0, k_lin >= 0, F_off} sum
-//!     (F_meas - F)^2
+//!     F[k] = F_off + k_lin x[k] + sum_i k_i delta_i[k]
+//!     min_{k_i >= 0, k_lin >= 0, F_off} sum_k (F_meas[k] - F[k])^2
 //!
 //! solved by NNLS; the break-away forces follow as f_i = k_i D_i. Elements whose stiffness comes
 //! out 0 are dropped. Default slip displacements: D_i = i (x_max - x_min) / (2 (N + 1)), i = 1..N:

@@ -4,9 +4,10 @@
 //! cosine-shaped transformation branches, a model with LOCAL memory (it cannot produce internal
 //! loops: no return-point memory, minor loops do not close).
 //!
-//!     heating (v rising),  A_s <= v <= A_f:  xi = xi_M h(v),  h(v) = (cos(pi (v - A_s)/(A_f -
-//!     A_s)) + 1)/2 cooling (v falling), M_f <= v <= M_s:  xi = 1 - (1 - xi_A) g(v),
-//!                                            g(v) = (1 - cos(pi (v - M_f)/(M_s - M_f)))/2
+//!     heating (v rising),  A_s <= v <= A_f:  xi = xi_M h(v)
+//!     cooling (v falling), M_f <= v <= M_s:  xi = 1 - (1 - xi_A) g(v)
+//!     h(v) = (cos(pi (v - A_s)/(A_f - A_s)) + 1)/2
+//!     g(v) = (1 - cos(pi (v - M_f)/(M_s - M_f)))/2
 //!     outside these windows xi is held;  y = y_A + (y_M - y_A) xi
 //!
 //! (g is the reference's ((1 - xi_A)/2) cos(...) + (1 + xi_A)/2 rewritten; h(A_s) = 1, h(A_f) = 0,

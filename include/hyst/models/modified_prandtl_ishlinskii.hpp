@@ -4,8 +4,9 @@
 //! memory-free superposition of dead-zone operators, which makes the loops asymmetric and
 //! saturating while keeping an analytic inverse.
 //!
-//!     y = y_off + S[ Gamma[v] ],   Gamma[v] = q + sum_j p_j F_{r_j}[v]   (PI,
-//!     prandtl_ishlinskii.hpp) S(x) = sum_{i=-l..l} g_i S_{d_i}(x) (dead_zone_superposition.hpp)
+//!     y = y_off + S[ Gamma[v] ]
+//!     Gamma[v] = q + sum_j p_j F_{r_j}[v]        (PI, prandtl_ishlinskii.hpp)
+//!     S(x) = sum_{i=-l..l} g_i S_{d_i}(x)        (dead_zone_superposition.hpp)
 //!
 //! Parameters: the PI part (thresholds r_j [input units], weights p_j, its own offset q [output
 //! units]), the dead-zone part (thresholds d_i [output units] around d_0 = 0, weights g_i [-]),

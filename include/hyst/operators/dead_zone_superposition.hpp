@@ -11,9 +11,10 @@
 //! and every such partial sum is > 0; its inverse is again a dead-zone superposition:
 //!
 //!     g'_0 = 1/g_0,  d'_0 = 0
-//!     i > 0:  g'_i = -g_i / ((sum_{j=0..i} g_j)(sum_{j=0..i-1} g_j)),  d'_i = sum_{j=0..i} g_j
-//!     (d_i - d_j) i < 0:  g'_i = -g_i / ((sum_{j=i..0} g_j)(sum_{j=i+1..0} g_j)),  d'_i =
-//!     sum_{j=i..0} g_j (d_i - d_j)
+//!     i > 0:  g'_i = -g_i / ((sum_{j=0..i} g_j)(sum_{j=0..i-1} g_j))
+//!             d'_i = sum_{j=0..i} g_j (d_i - d_j)
+//!     i < 0:  g'_i = -g_i / ((sum_{j=i..0} g_j)(sum_{j=i+1..0} g_j))
+//!             d'_i = sum_{j=i..0} g_j (d_i - d_j)
 //!
 //! (d'_i = S(d_i): the thresholds move with the map.) Thresholds are listed in increasing order,
 //! with exactly one equal to 0; the negative ones may be absent (Kuhnen's original, d_i >= 0).
