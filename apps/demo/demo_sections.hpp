@@ -14,3 +14,7 @@ std::string piezo_section(const std::filesystem::path& data_dir,
 // PID + feedforward compared (actuator_section.cpp); `config_file` is the actuator's JSON.
 std::string actuator_section(const std::filesystem::path& config_file,
                              const std::filesystem::path& folder);
+
+// The seed paper's comparison of Ikuta's, the PI and the Preisach model on one input with
+// internal loops (seed_comparison_section.cpp); needs no data.
+std::string seed_comparison_section(const std::filesystem::path& folder);

@@ -103,6 +103,17 @@ std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params p
   return adapter;
 }
 
+// A state built by `make` (the model's validating make_state), with the state object's path in
+// front of a validation error: "state: Ikuta state fraction = 2 must be in [0, 1]".
+template <class Make>
+auto state_at(const JsonFields& fields, Make make) {
+  try {
+    return make();
+  } catch (const Error& error) {
+    throw Error(fields.path() + ": " + error.what());
+  }
+}
+
 // {"play": [...]}: the state of every play-operator model (PI, GPI), validated by the model.
 template <class Model>
 typename Model::State play_state_from_json(const Model& model, JsonFields& fields) {

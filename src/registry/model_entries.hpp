@@ -11,6 +11,11 @@ namespace hyst::detail {
 ModelEntry prandtl_ishlinskii_entry();
 ModelEntry generalized_prandtl_ishlinskii_entry();
 ModelEntry preisach_entry();
+ModelEntry ikuta_sma_entry();
+ModelEntry krasnoselskii_pokrovskii_entry();
+ModelEntry maxwell_slip_entry();
+ModelEntry modified_prandtl_ishlinskii_entry();
+ModelEntry rate_dependent_prandtl_ishlinskii_entry();
 
 // The validated-by-shape parameters of a model file's "params" object (unknown fields rejected;
 // messages name the path, e.g. "hysteresis.params.rho"), for code that builds the concrete model.

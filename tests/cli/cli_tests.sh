@@ -222,26 +222,41 @@ case_models() {
 
 case_every_model() {
   # The registry walk: every registered model's example file works with info, simulate, invert
-  # (simulating the inverse's input gives the target back) and fit.
+  # (simulating the inverse's input gives the target back) and fit - or, for a model listed
+  # without inverse or fitter, fails with one clear error line.
   write_input_csv in.csv
   expect_ok "$HYST" models
-  local names name
+  local names name listing
+  listing="$(cat "$WORK/stdout")"
   names="$(awk 'NR > 1 && ($2 == "yes" || $2 == "no") { print $1 }' "$WORK/stdout")"
   [ -n "$names" ] || fail "hyst models listed no model"
   for name in $names; do
+    local can_fit can_invert
+    can_fit="$(awk -v n="$name" '$1 == n { print $2 }' <<<"$listing")"
+    can_invert="$(awk -v n="$name" '$1 == n { print $3 }' <<<"$listing")"
     expect_ok "$HYST" models "$name"
     sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >"$name.json"
     expect_ok "$HYST" info "$name.json"
     expect_stdout "model:      $name"
     expect_ok "$HYST" simulate --model "$name.json" --input in.csv --column v --out "$name-y.csv"
-    expect_ok "$HYST" invert --model "$name.json" --target "$name-y.csv" --column y \
-      --out "$name-v.csv"
-    expect_ok "$HYST" simulate --model "$name.json" --input "$name-v.csv" --column v \
-      --out "$name-y2.csv"
-    expect_close "$name-y2.csv" 2 "$name-y.csv" 2 1e-6
-    expect_ok "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \
-      --validate-fraction 0.25 --out "$name-fit.json"
-    expect_stdout "$name fitted by"
+    if [ "$can_invert" = yes ]; then
+      expect_ok "$HYST" invert --model "$name.json" --target "$name-y.csv" --column y \
+        --out "$name-v.csv"
+      expect_ok "$HYST" simulate --model "$name.json" --input "$name-v.csv" --column v \
+        --out "$name-y2.csv"
+      expect_close "$name-y2.csv" 2 "$name-y.csv" 2 1e-6
+    else
+      expect_error 1 "has no inverse" -- "$HYST" invert --model "$name.json" \
+        --target "$name-y.csv" --column y --out "$name-v.csv"
+    fi
+    if [ "$can_fit" = yes ]; then
+      expect_ok "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \
+        --validate-fraction 0.25 --out "$name-fit.json"
+      expect_stdout "$name fitted by"
+    else
+      expect_error 1 "$name" -- "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \
+        --out "$name-fit.json"
+    fi
   done
 }
 

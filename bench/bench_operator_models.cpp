@@ -1,0 +1,117 @@
+// ns/sample of the further operator models: Ikuta's SMA model, the Krasnosel'skii-Pokrovskii grid
+// (N = 6, 21), Maxwell-slip (8 and 32 elements), the modified PI and its analytic inverse, the
+// rate-dependent PI, and, for the seed paper's comparison, the PI model with 8 backlash elements
+// and the Preisach model with 231 relays (fast and relay by relay), on the same input.
+// Items processed = samples, so Google Benchmark reports samples/s; ns/sample = 1e9 / rate.
+
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/ikuta_sma.hpp"
+#include "hyst/models/krasnoselskii_pokrovskii.hpp"
+#include "hyst/models/maxwell_slip.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/preisach.hpp"
+#include "hyst/models/preisach_relay_grid.hpp"
+#include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
+#include "hyst/signals/generators.hpp"
+
+namespace {
+
+constexpr std::size_t kSamples = 1 << 12;
+
+// A random walk in [-1, 1]: reversals at every scale, many nested loops.
+const std::vector<double>& input() {
+  static const auto samples = hyst::signals::generate(
+      hyst::signals::TimeGrid{kSamples, 1e-4},
+      hyst::signals::RandomWalk{.max_step = 0.05, .lower = -1, .upper = 1, .start = 0, .seed = 1});
+  return samples;
+}
+
+template <class Model>
+void run_steps(benchmark::State& bench, const Model& model) {
+  auto state = model.initial_state();
+  for (auto _ : bench) {
+    for (double v : input())
+      benchmark::DoNotOptimize(model.step(state, v));
+  }
+  bench.SetItemsProcessed(static_cast<std::int64_t>(bench.iterations() * input().size()));
+}
+
+hyst::ModifiedPrandtlIshlinskii modified_pi() {
+  return hyst::ModifiedPrandtlIshlinskii(
+      {.pi = {.thresholds = hyst::uniform_thresholds(8, 0.1),
+              .weights = {0.8, 0.5, 0.3, 0.2, 0.1, 0.1, 0.05, 0.05}},
+       .dead_zone = {.thresholds = {-1.5, -0.8, -0.3, 0, 0.4, 0.9, 1.6},
+                     .weights = {0.05, 0.1, 0.2, 1.0, -0.15, -0.2, -0.1}}});
+}
+
+void BM_IkutaSma(benchmark::State& bench) {
+  run_steps(bench, hyst::IkutaSma({.martensite_finish = -0.8,
+                                   .martensite_start = 0.2,
+                                   .austenite_start = -0.2,
+                                   .austenite_finish = 0.8}));
+}
+
+void BM_KrasnoselskiiPokrovskii(benchmark::State& bench) {
+  const auto levels = static_cast<std::size_t>(bench.range(0));
+  run_steps(bench, hyst::KrasnoselskiiPokrovskii(
+                       {.levels = levels,
+                        .weights = std::vector<double>(levels * (levels + 1) / 2, 1.0)}));
+}
+
+void BM_MaxwellSlip(benchmark::State& bench) {
+  const auto n = static_cast<std::size_t>(bench.range(0));
+  std::vector<double> k(n, 1.0), f(n);
+  for (std::size_t i = 0; i < n; ++i)
+    f[i] = 0.02 * static_cast<double>(i + 1);
+  run_steps(bench, hyst::MaxwellSlip({.stiffness = k, .break_away = f, .linear_stiffness = 1}));
+}
+
+void BM_ModifiedPi(benchmark::State& bench) {
+  run_steps(bench, modified_pi());
+}
+
+void BM_InverseModifiedPi(benchmark::State& bench) {
+  run_steps(bench, hyst::InverseModifiedPrandtlIshlinskii(modified_pi()));
+}
+
+void BM_RateDependentPi(benchmark::State& bench) {
+  run_steps(bench, hyst::RateDependentPrandtlIshlinskii(hyst::rate_dependent_pi_exponential(
+                       0.1, 1.0, 0.5, static_cast<std::size_t>(bench.range(0)) - 1, 0.01, 1e-4)));
+}
+
+// The seed comparison: 8 unweighted backlash elements, 231 unweighted relays.
+void BM_SeedPi8(benchmark::State& bench) {
+  run_steps(bench, hyst::PrandtlIshlinskii({.thresholds = hyst::uniform_thresholds(8, 0.125),
+                                            .weights = std::vector<double>(8, 0.125)}));
+}
+
+hyst::Preisach::Params relays231() {
+  return {
+      .everett = {
+          .levels = 21, .lower = -1, .upper = 1, .weights = std::vector<double>(231, 1.0 / 231.0)}};
+}
+
+void BM_SeedPreisach231(benchmark::State& bench) {
+  run_steps(bench, hyst::Preisach(relays231()));
+}
+
+void BM_SeedPreisach231RelayByRelay(benchmark::State& bench) {
+  run_steps(bench, hyst::PreisachRelayGrid(relays231()));
+}
+
+}  // namespace
+
+BENCHMARK(BM_IkutaSma);
+BENCHMARK(BM_KrasnoselskiiPokrovskii)->Arg(6)->Arg(21);
+BENCHMARK(BM_MaxwellSlip)->Arg(8)->Arg(32);
+BENCHMARK(BM_ModifiedPi);
+BENCHMARK(BM_InverseModifiedPi);
+BENCHMARK(BM_RateDependentPi)->Arg(8)->Arg(16);
+BENCHMARK(BM_SeedPi8);
+BENCHMARK(BM_SeedPreisach231);
+BENCHMARK(BM_SeedPreisach231RelayByRelay);

@@ -1,0 +1,71 @@
+#include "weight_fit.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "hyst/core/checks.hpp"
+#include "hyst/core/error.hpp"
+#include "hyst/identify/data_split.hpp"
+
+namespace hyst::detail {
+
+double range_of(std::span<const double> samples) {
+  const auto [lowest, highest] = std::minmax_element(samples.begin(), samples.end());
+  return *highest - *lowest;
+}
+
+RecordParts split_record(std::span<const double> input, std::span<const double> output,
+                         double validate_fraction, std::string_view who, std::size_t unknowns) {
+  const auto input_name = fmt::format("{} input", who);
+  const auto output_name = fmt::format("{} output", who);
+  require_same_size(input.size(), input_name, output.size(), output_name);
+  require_not_empty(input.size(), input_name);
+  require_finite(input, input_name);
+  require_finite(output, output_name);
+  DataSplit split;
+  try {
+    split = split_by_fraction(input.size(), validate_fraction);
+  } catch (const Error& error) {
+    throw Error(fmt::format("{}: {}", who, error.what()), "validate_fraction");
+  }
+  RecordParts parts{input.subspan(split.fit_begin, split.fit_size()),
+                    output.subspan(split.fit_begin, split.fit_size()),
+                    input.subspan(split.validation_begin, split.validation_size()),
+                    output.subspan(split.validation_begin, split.validation_size())};
+  if (parts.fit_input.size() < unknowns + 2) {
+    throw Error(fmt::format("{}: the fit part has {} samples, fewer than unknowns + 2 = {}", who,
+                            parts.fit_input.size(), unknowns + 2));
+  }
+  if (!(range_of(parts.fit_input) > 0.0)) {
+    throw Error(
+        fmt::format("{}: the input of the fit part is constant (= {}); hysteresis needs "
+                    "a varying input to be identified",
+                    who, parts.fit_input.front()));
+  }
+  if (!(range_of(parts.fit_output) > 0.0)) {
+    throw Error(
+        fmt::format("{}: the output of the fit part is constant (= {}); there is no "
+                    "hysteresis to fit",
+                    who, parts.fit_output.front()));
+  }
+  return parts;
+}
+
+OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset) {
+  Eigen::RowVectorXd means = Eigen::RowVectorXd::Zero(A.cols());
+  double b_mean = 0.0;
+  if (fit_offset) {
+    // The best offset for any x is mean(b - A x): centring removes it from the problem.
+    means = A.colwise().mean();
+    b_mean = b.mean();
+    A.rowwise() -= means;
+    b.array() -= b_mean;
+  }
+  OffsetNnls solution;
+  solution.nnls = nnls(A, b);
+  solution.x = solution.nnls.x;
+  if (fit_offset) solution.offset = b_mean - means.dot(solution.x);
+  return solution;
+}
+
+}  // namespace hyst::detail

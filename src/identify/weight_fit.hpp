@@ -1,0 +1,84 @@
+#pragma once
+// Shared steps of the fits whose model output is linear in non-negative weights (KP,
+// Maxwell-slip, modified PI): record checks and split, NNLS with a free offset, and the report.
+
+#include <chrono>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+#include <Eigen/Core>
+
+#include "hyst/core/simulate.hpp"
+#include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/nnls.hpp"
+
+namespace hyst::detail {
+
+// The fit part and the validation part (possibly empty) of one record.
+struct RecordParts {
+  std::span<const double> fit_input;
+  std::span<const double> fit_output;
+  std::span<const double> validation_input;
+  std::span<const double> validation_output;
+};
+
+// Checks lengths, finiteness, a varying input and output and at least unknowns + 2 samples in
+// the fit part, then splits off the last validate_fraction. Messages start with `who`.
+RecordParts split_record(std::span<const double> input, std::span<const double> output,
+                         double validate_fraction, std::string_view who, std::size_t unknowns);
+
+// min ||A x + offset - b||^2 over x >= 0 (and the offset when fit_offset; else offset = 0).
+struct OffsetNnls {
+  Eigen::VectorXd x;
+  double offset = 0.0;
+  NnlsResult nnls;
+};
+OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset);
+
+// Range max - min of the samples.
+double range_of(std::span<const double> samples);
+
+// The report of a fitted model: termination from the NNLS, costs and error metrics on the fit
+// part (simulated from `state`, which is advanced) and on the validation part (continuing).
+template <class Model>
+FitReport weight_fit_report(std::string_view name, std::string method, const OffsetNnls& solution,
+                            std::size_t parameters, const Model& model, typename Model::State state,
+                            const RecordParts& parts, std::chrono::steady_clock::time_point start) {
+  FitReport report;
+  report.model = std::string(name);
+  report.method = std::move(method);
+  report.termination = solution.nnls.termination;
+  std::size_t zero = 0;
+  for (Eigen::Index j = 0; j < solution.x.size(); ++j)
+    zero += solution.x[j] == 0.0 ? 1 : 0;
+  report.message = fmt::format(
+      "{}; {} of {} unknowns at their lower bound",
+      solution.nnls.converged()
+          ? fmt::format("KKT conditions hold within tolerance {:.3g}", solution.nnls.tolerance)
+          : solution.nnls.message,
+      zero, solution.x.size());
+  report.iterations = solution.nnls.iterations;
+  report.parameters = parameters;
+  const auto predicted = simulate(model, state, parts.fit_input);
+  double mean = 0.0;
+  for (double y : parts.fit_output)
+    mean += y;
+  mean /= static_cast<double>(parts.fit_output.size());
+  for (std::size_t k = 0; k < predicted.size(); ++k) {
+    const double e = parts.fit_output[k] - predicted[k];
+    report.final_cost += 0.5 * e * e;
+    report.initial_cost += 0.5 * (parts.fit_output[k] - mean) * (parts.fit_output[k] - mean);
+  }
+  report.fit = error_metrics(parts.fit_output, predicted);
+  if (!parts.validation_input.empty()) {
+    const auto validation = simulate(model, state, parts.validation_input);
+    report.validation = error_metrics(parts.validation_output, validation);
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,112 @@
+#include "hyst/models/maxwell_slip.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "hyst/core/checks.hpp"
+#include "hyst/core/error.hpp"
+
+namespace hyst {
+namespace {
+
+void validate(const MaxwellSlip::Params& p) {
+  const auto& k = p.stiffness;
+  const auto& f = p.break_away;
+  if (k.empty()) throw Error("Maxwell-slip stiffness k is empty", "stiffness");
+  if (k.size() != f.size()) {
+    throw Error(fmt::format("Maxwell-slip has {} stiffnesses k but {} break-away forces f; they "
+                            "must have the same length",
+                            k.size(), f.size()),
+                "break_away");
+  }
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    if (!std::isfinite(k[i]) || !(k[i] > 0.0)) {
+      throw Error(fmt::format("Maxwell-slip stiffness k[{}] = {} must be finite and > 0", i, k[i]),
+                  fmt::format("stiffness[{}]", i));
+    }
+    if (!std::isfinite(f[i]) || !(f[i] > 0.0)) {
+      throw Error(fmt::format("Maxwell-slip break_away f[{}] = {} must be finite and > 0", i, f[i]),
+                  fmt::format("break_away[{}]", i));
+    }
+    if (i > 0 && !(f[i] / k[i] > f[i - 1] / k[i - 1])) {
+      throw Error(fmt::format("Maxwell-slip slip displacement f[{}]/k[{}] = {} must be > "
+                              "f[{}]/k[{}] = {} (list the elements by increasing f/k)",
+                              i, i, f[i] / k[i], i - 1, i - 1, f[i - 1] / k[i - 1]),
+                  fmt::format("break_away[{}]", i));
+    }
+  }
+  if (!std::isfinite(p.linear_stiffness) || p.linear_stiffness < 0.0) {
+    throw Error(fmt::format("Maxwell-slip linear_stiffness = {} must be finite and >= 0",
+                            p.linear_stiffness),
+                "linear_stiffness");
+  }
+  if (!std::isfinite(p.offset)) {
+    throw Error(fmt::format("Maxwell-slip offset = {} is not finite", p.offset), "offset");
+  }
+}
+
+}  // namespace
+
+MaxwellSlip::MaxwellSlip(Params params) : params_(std::move(params)) {
+  validate(params_);
+  slip_.resize(size());
+  for (std::size_t i = 0; i < size(); ++i)
+    slip_[i] = params_.break_away[i] / params_.stiffness[i];
+}
+
+MaxwellSlip::State MaxwellSlip::state_at_rest(double input) const {
+  require_finite(input, "Maxwell-slip rest position x0");
+  return State{std::vector<double>(size(), 0.0), input};
+}
+
+MaxwellSlip::State MaxwellSlip::make_state(std::vector<double> deflection, double input) const {
+  require_same_size(deflection.size(), "Maxwell-slip state deflection", size(),
+                    "Maxwell-slip stiffness k");
+  require_finite(input, "Maxwell-slip state input");
+  for (std::size_t i = 0; i < deflection.size(); ++i) {
+    if (!std::isfinite(deflection[i]) || std::abs(deflection[i]) > slip_[i]) {
+      throw Error(
+          fmt::format("Maxwell-slip state deflection[{}] = {} must be finite and within "
+                      "+-f[{}]/k[{}] = +-{}",
+                      i, deflection[i], i, i, slip_[i]));
+    }
+  }
+  return State{std::move(deflection), input};
+}
+
+double MaxwellSlip::output(const State& state) const {
+  require_same_size(state.deflection.size(), "Maxwell-slip state deflection", size(),
+                    "Maxwell-slip stiffness k");
+  double force = params_.offset + params_.linear_stiffness * state.input;
+  for (std::size_t i = 0; i < size(); ++i)
+    force += params_.stiffness[i] * state.deflection[i];
+  return force;
+}
+
+PrandtlIshlinskii MaxwellSlip::to_prandtl_ishlinskii() const {
+  PrandtlIshlinskii::Params pi;
+  pi.thresholds.push_back(0.0);
+  pi.weights.push_back(params_.linear_stiffness);
+  for (std::size_t i = 0; i < size(); ++i) {
+    pi.thresholds.push_back(slip_[i]);
+    pi.weights.push_back(-params_.stiffness[i]);
+    pi.weights[0] += params_.stiffness[i];
+  }
+  pi.offset = params_.offset;
+  return PrandtlIshlinskii(std::move(pi));
+}
+
+PrandtlIshlinskii::State MaxwellSlip::prandtl_ishlinskii_state(const State& state) const {
+  require_same_size(state.deflection.size(), "Maxwell-slip state deflection", size(),
+                    "Maxwell-slip stiffness k");
+  std::vector<double> play;
+  play.reserve(size() + 1);
+  play.push_back(state.input);
+  for (double delta : state.deflection)
+    play.push_back(state.input - delta);
+  return to_prandtl_ishlinskii().make_state(std::move(play));
+}
+
+}  // namespace hyst

@@ -1,0 +1,97 @@
+// Registry entry of Ikuta's SMA model (local memory): its model-file form. No inverse, no fitter.
+
+#include <fmt/format.h>
+
+#include "hyst/models/ikuta_sma.hpp"
+#include "model_adapter.hpp"
+#include "model_entries.hpp"
+
+namespace hyst::detail {
+namespace {
+
+struct IkutaSmaCodec {
+  using Model = IkutaSma;
+  static constexpr std::string_view name = "ikuta_sma";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    return {{"martensite_finish", p.martensite_finish}, {"martensite_start", p.martensite_start},
+            {"austenite_start", p.austenite_start},     {"austenite_finish", p.austenite_finish},
+            {"output_austenite", p.output_austenite},   {"output_martensite", p.output_martensite},
+            {"initial_fraction", p.initial_fraction},   {"initial_input", p.initial_input}};
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return {{"fraction", state.fraction},
+            {"input", state.input},
+            {"branch", std::string(to_string(state.branch))},
+            {"scale", state.scale}};
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    const double fraction = fields.number("fraction");
+    const double input = fields.number("input");
+    const auto branch = fields.has("branch") ? fields.parsed("branch", ikuta_branch_from_string)
+                                             : IkutaSma::Branch::rest;
+    const double scale = fields.number_or("scale", -1.0);
+    return state_at(fields, [&] { return model.make_state(fraction, input, branch, scale); });
+  }
+  static std::size_t parameter_count(const Model&) { return 6; }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    return fmt::format(
+        "Ikuta SMA model (local memory, no internal loops): cooling window M_f = {} .. M_s = {}, "
+        "heating window A_s = {} .. A_f = {}, output {} (austenite) .. {} (martensite); initial "
+        "fraction {} at input {}\n",
+        p.martensite_finish, p.martensite_start, p.austenite_start, p.austenite_finish,
+        p.output_austenite, p.output_martensite, p.initial_fraction, p.initial_input);
+  }
+  static bool has_inverse(const Model&) { return false; }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model&, const Model::State&,
+                                                      const InverseLimits&) {
+    throw Error(
+        "the Ikuta SMA model is not invertible: its output is constant outside the "
+        "transformation windows");
+  }
+};
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  IkutaSma::Params params;
+  params.martensite_finish = fields.number("martensite_finish");
+  params.martensite_start = fields.number("martensite_start");
+  params.austenite_start = fields.number("austenite_start");
+  params.austenite_finish = fields.number("austenite_finish");
+  params.output_austenite = fields.number("output_austenite");
+  params.output_martensite = fields.number("output_martensite");
+  params.initial_fraction = fields.number_or("initial_fraction", params.initial_fraction);
+  params.initial_input = fields.number_or("initial_input", params.initial_input);
+  fields.finish();
+  return make_dynamic_model<IkutaSmaCodec>(params, state_json);
+}
+
+}  // namespace
+
+ModelEntry ikuta_sma_entry() {
+  ModelEntry entry;
+  entry.name = std::string(IkutaSmaCodec::name);
+  entry.description =
+      "Ikuta SMA model: cosine phase-fraction branches, local memory (no internal loops)";
+  entry.parameters = {
+      {"martensite_finish", "number", "input units", "M_f: cooling transformation ends (< M_s)"},
+      {"martensite_start", "number", "input units", "M_s: cooling transformation starts"},
+      {"austenite_start", "number", "input units", "A_s: heating transformation starts (>= M_f)"},
+      {"austenite_finish", "number", "input units", "A_f: heating transformation ends (>= M_s)"},
+      {"output_austenite", "number", "output units", "y_A: output at martensite fraction 0"},
+      {"output_martensite", "number", "output units", "y_M: output at martensite fraction 1"},
+      {"initial_fraction", "number", "", "martensite fraction at rest, in [0, 1] (default 1)"},
+      {"initial_input", "number", "input units", "input of the initial rest state (default 0)"},
+  };
+  entry.create = &create;
+  entry.example_params = {{"martensite_finish", -0.8}, {"martensite_start", 0.2},
+                          {"austenite_start", -0.2},   {"austenite_finish", 0.8},
+                          {"output_austenite", 1.0},   {"output_martensite", -1.0},
+                          {"initial_fraction", 1.0},   {"initial_input", -1.0}};
+  return entry;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,136 @@
+// Registry entry of the Maxwell-slip model: its model-file form, its inverse (through the
+// equivalent PI model, when there is a linear spring) and its NNLS fitter.
+
+#include <fmt/format.h>
+
+#include "held_out_validation.hpp"
+#include "hyst/identify/fit_maxwell_slip.hpp"
+#include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
+#include "hyst/models/maxwell_slip.hpp"
+#include "model_adapter.hpp"
+#include "model_entries.hpp"
+
+namespace hyst::detail {
+namespace {
+
+nlohmann::json inverse_state_to_json(const InversePrandtlIshlinskii::State& state) {
+  return {{"play", state.play}};
+}
+
+struct MaxwellSlipCodec {
+  using Model = MaxwellSlip;
+  static constexpr std::string_view name = "maxwell_slip";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    return {{"stiffness", p.stiffness},
+            {"break_away", p.break_away},
+            {"linear_stiffness", p.linear_stiffness},
+            {"offset", p.offset}};
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return {{"deflection", state.deflection}, {"input", state.input}};
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    auto deflection = fields.numbers("deflection");
+    const double input = fields.number("input");
+    return state_at(fields, [&] { return model.make_state(std::move(deflection), input); });
+  }
+  static std::size_t parameter_count(const Model& model) { return 2 * model.size() + 2; }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    std::string text = fmt::format(
+        "Maxwell-slip model: {} elasto-slide elements, linear stiffness {}, offset {}, {}"
+        "invertible\n   i    stiffness k_i   break-away f_i   slip f_i/k_i\n",
+        model.size(), p.linear_stiffness, p.offset, model.is_invertible() ? "" : "not ");
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      text += fmt::format("{:4}  {:14.8g}  {:14.8g}  {:14.8g}\n", i, p.stiffness[i],
+                          p.break_away[i], model.slip_displacements()[i]);
+    }
+    return text;
+  }
+  static bool has_inverse(const Model& model) { return model.is_invertible(); }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
+                                                      const InverseLimits& limits) {
+    if (!model.is_invertible()) {
+      throw Error(
+          "the Maxwell-slip model saturates at offset +- sum f_i and has no inverse unless "
+          "linear_stiffness > 0");
+    }
+    InversePrandtlIshlinskii inverse(model.to_prandtl_ishlinskii(),
+                                     {limits.input_min, limits.input_max});
+    auto inverse_state = inverse.state_consistent_with(model.prandtl_ishlinskii_state(state));
+    return std::make_unique<
+        InverseAdapter<InversePrandtlIshlinskii, decltype(&inverse_state_to_json)>>(
+        std::move(inverse), std::move(inverse_state), &inverse_state_to_json);
+  }
+};
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  MaxwellSlip::Params params;
+  params.stiffness = fields.numbers("stiffness");
+  params.break_away = fields.numbers("break_away");
+  params.linear_stiffness = fields.number_or("linear_stiffness", 0.0);
+  params.offset = fields.number_or("offset", 0.0);
+  fields.finish();
+  return make_dynamic_model<MaxwellSlipCodec>(std::move(params), state_json);
+}
+
+FitOutcome fit(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  MaxwellSlipFitOptions options;
+  options.elements = fields.count_or("elements", options.elements);
+  if (fields.has("slip_displacements")) {
+    options.slip_displacements = fields.numbers("slip_displacements");
+  }
+  options.fit_linear_stiffness =
+      fields.boolean_or("fit_linear_stiffness", options.fit_linear_stiffness);
+  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  auto result = fit_maxwell_slip(request.input, request.output, options);
+  if (!request.validation_input.empty()) {
+    add_held_out_validation(request, result.model,
+                            result.model.state_at_rest(request.validation_input.front()),
+                            result.report);
+  }
+  return {std::make_unique<ModelAdapter<MaxwellSlipCodec>>(std::move(result.model),
+                                                           std::move(result.initial_state)),
+          std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry maxwell_slip_entry() {
+  ModelEntry entry;
+  entry.name = std::string(MaxwellSlipCodec::name);
+  entry.description =
+      "Maxwell-slip: parallel elasto-slide elements (stop operators); inverse via the PI form "
+      "when linear_stiffness > 0; stiffnesses by NNLS";
+  entry.parameters = {
+      {"stiffness", "array of numbers", "force / position units", "k_i > 0 of each element"},
+      {"break_away", "array of numbers", "force units",
+       "f_i > 0 of each element; f_i/k_i strictly increasing"},
+      {"linear_stiffness", "number", "force / position units",
+       "k_lin >= 0 of a parallel spring (default 0); > 0 makes the model invertible"},
+      {"offset", "number", "force units", "F_off (default 0)"},
+  };
+  entry.fit_options = {
+      {"elements", "whole number", "", "N elements when slip_displacements is not given (10)"},
+      {"slip_displacements", "array of numbers", "position units",
+       "fixed f_i/k_i, increasing (default: uniform up to half the range)"},
+      {"fit_linear_stiffness", "boolean", "", "fit k_lin >= 0 (true)"},
+      {"fit_offset", "boolean", "", "fit the force offset (true)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  entry.example_params = {{"stiffness", {3.0, 2.0, 1.0}},
+                          {"break_away", {0.3, 0.4, 0.5}},
+                          {"linear_stiffness", 0.5},
+                          {"offset", 0.0}};
+  return entry;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,167 @@
+// Registry entry of the modified Prandtl-Ishlinskii model: its model-file form, its analytic
+// inverse and its constrained least-squares fitter.
+
+#include <fmt/format.h>
+
+#include "held_out_validation.hpp"
+#include "hyst/identify/fit_modified_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii.hpp"
+#include "model_adapter.hpp"
+#include "model_entries.hpp"
+
+namespace hyst::detail {
+namespace {
+
+nlohmann::json play_state_to_json(const PrandtlIshlinskii::State& state) {
+  return {{"play", state.play}};
+}
+
+struct ModifiedPiCodec {
+  using Model = ModifiedPrandtlIshlinskii;
+  static constexpr std::string_view name = "modified_pi";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    return {{"thresholds", p.pi.thresholds},
+            {"weights", p.pi.weights},
+            {"pi_offset", p.pi.offset},
+            {"dead_zone_thresholds", p.dead_zone.thresholds},
+            {"dead_zone_weights", p.dead_zone.weights},
+            {"offset", p.offset}};
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return play_state_to_json(state);
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    return play_state_from_json(model, fields);
+  }
+  static std::size_t parameter_count(const Model& model) {
+    return model.params().pi.weights.size() + model.params().dead_zone.weights.size() + 2;
+  }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    std::string text = fmt::format(
+        "Modified Prandtl-Ishlinskii model: {} play operators (offset {}), {} dead zones, output "
+        "offset {}, {}invertible\n   j   threshold r_j      weight p_j\n",
+        p.pi.thresholds.size(), p.pi.offset, p.dead_zone.thresholds.size(), p.offset,
+        model.is_invertible() ? "" : "not ");
+    for (std::size_t j = 0; j < p.pi.thresholds.size(); ++j)
+      text += fmt::format("{:4}  {:14.8g}  {:14.8g}\n", j, p.pi.thresholds[j], p.pi.weights[j]);
+    text += "   i   dead zone d_i      weight g_i\n";
+    for (std::size_t i = 0; i < p.dead_zone.thresholds.size(); ++i) {
+      text += fmt::format("{:4}  {:14.8g}  {:14.8g}\n", i, p.dead_zone.thresholds[i],
+                          p.dead_zone.weights[i]);
+    }
+    return text;
+  }
+  static bool has_inverse(const Model& model) { return model.is_invertible(); }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
+                                                      const InverseLimits& limits) {
+    InverseModifiedPrandtlIshlinskii inverse(model, {limits.input_min, limits.input_max});
+    auto inverse_state = inverse.state_consistent_with(state);
+    return std::make_unique<
+        InverseAdapter<InverseModifiedPrandtlIshlinskii, decltype(&play_state_to_json)>>(
+        std::move(inverse), std::move(inverse_state), &play_state_to_json);
+  }
+};
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  ModifiedPrandtlIshlinskii::Params params;
+  params.pi.thresholds = fields.numbers("thresholds");
+  params.pi.weights = fields.numbers("weights");
+  params.pi.offset = fields.number_or("pi_offset", 0.0);
+  params.dead_zone.thresholds = fields.numbers("dead_zone_thresholds");
+  params.dead_zone.weights = fields.numbers("dead_zone_weights");
+  params.offset = fields.number_or("offset", 0.0);
+  fields.finish();
+  // The model's fields are "pi.thresholds" etc.; in the file they are flat.
+  try {
+    return make_dynamic_model<ModifiedPiCodec>(std::move(params), state_json);
+  } catch (const Error& error) {
+    std::string message = error.what();
+    for (const auto& [from, to] :
+         {std::pair<std::string, std::string>{"params.pi.offset", "params.pi_offset"},
+          {"params.pi.", "params."},
+          {"params.dead_zone.", "params.dead_zone_"}}) {
+      if (message.rfind(from, 0) == 0) {
+        message = to + message.substr(from.size());
+        break;
+      }
+    }
+    throw Error(message);
+  }
+}
+
+FitOutcome fit(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  ModifiedPiFitOptions options;
+  options.operators = fields.count_or("operators", options.operators);
+  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
+  options.dead_zones = fields.count_or("dead_zones", options.dead_zones);
+  if (fields.has("dead_zone_thresholds")) {
+    options.dead_zone_thresholds = fields.numbers("dead_zone_thresholds");
+  }
+  if (fields.has("output_offset")) options.output_offset = fields.number("output_offset");
+  options.min_weight = fields.number_or("min_weight", options.min_weight);
+  if (fields.has("initial_state")) {
+    options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
+  }
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  auto result = fit_modified_prandtl_ishlinskii(request.input, request.output, options);
+  // A held-out record starts like the fitted one: virgin, or in its own periodic state.
+  const bool periodic = options.initial_state == PiFitOptions::InitialState::periodic;
+  add_held_out_validation(
+      request, result.model,
+      periodic && !request.validation_input.empty()
+          ? result.model.make_state(
+                pi_periodic_state(result.model.hysteresis(), request.validation_input).play)
+          : result.model.initial_state(),
+      result.report);
+  return {std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model),
+                                                          std::move(result.initial_state)),
+          std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry modified_prandtl_ishlinskii_entry() {
+  ModelEntry entry;
+  entry.name = std::string(ModifiedPiCodec::name);
+  entry.description =
+      "modified PI (Kuhnen): PI followed by dead-zone superposition; analytic inverse; weights "
+      "by constrained least squares";
+  entry.parameters = {
+      {"thresholds", "array of numbers", "input units", "play half-widths 0 = r_0 < r_1 < ..."},
+      {"weights", "array of numbers", "output / input units", "p_j, one per threshold"},
+      {"pi_offset", "number", "output units", "offset of the PI part (default 0)"},
+      {"dead_zone_thresholds", "array of numbers", "output units",
+       "d_i, increasing, one of them 0"},
+      {"dead_zone_weights", "array of numbers", "", "g_i; invertible iff outward partial sums > 0"},
+      {"offset", "number", "output units", "y_off added after the dead zones (default 0)"},
+  };
+  entry.fit_options = {
+      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
+      {"thresholds", "array of numbers", "input units", "fixed thresholds (default: uniform)"},
+      {"dead_zones", "whole number", "", "dead zones per side of the inverse map (3)"},
+      {"dead_zone_thresholds", "array of numbers", "output units",
+       "thresholds of the inverse dead-zone map around the offset, containing 0"},
+      {"output_offset", "number", "output units", "y_off (default: mid-range of the output)"},
+      {"min_weight", "number", "", "relative lower bound of p_0 and of the map's slopes (1e-6)"},
+      {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  entry.example_params = {{"thresholds", {0.0, 0.3, 0.7, 1.0}},
+                          {"weights", {0.8, 0.5, 0.3, 0.2}},
+                          {"pi_offset", 0.0},
+                          {"dead_zone_thresholds", {-1.5, -0.8, -0.3, 0.0, 0.4, 0.9, 1.6}},
+                          {"dead_zone_weights", {0.05, 0.1, 0.2, 1.0, -0.15, -0.2, -0.1}},
+                          {"offset", 0.0}};
+  return entry;
+}
+
+}  // namespace hyst::detail
