@@ -139,6 +139,8 @@ std::string name_problem(std::string_view name) {
   if (name.empty()) return "is empty";
   if (trim(name).size() != name.size()) return "has leading or trailing spaces";
   if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
+  // Written first in a file, it would be read as the file's byte order mark and dropped.
+  if (name.starts_with(kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
   return {};
 }
 
@@ -282,6 +284,10 @@ Table parse_csv(std::string_view text, std::string_view source_name,
     if (fields[j].empty()) {
       throw Error(fmt::format("{}column {} of the header has an empty name",
                               prefix(source, header_line), j + 1));
+    }
+    if (const std::string problem = name_problem(fields[j]); !problem.empty()) {
+      throw Error(fmt::format("{}column {} of the header: the name {}", prefix(source, header_line),
+                              j + 1, problem));
     }
     for (std::size_t i = 0; i < j; ++i) {
       if (table.names[i] == fields[j]) {
