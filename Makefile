@@ -78,7 +78,8 @@ test-sanitize: deps
 # Every libFuzzer target (fuzz/) for FUZZ_SECONDS from its committed seed corpus (fuzz/corpus/),
 # built with clang, AddressSanitizer and UndefinedBehaviorSanitizer in a build of its own (library,
 # command line and fuzz targets only). New inputs go to $(FUZZ_BUILD)/corpus/, crashes to
-# $(FUZZ_BUILD)/crashes/; the last line of each log has the number of executions.
+# $(FUZZ_BUILD)/crashes/; the last line of each log has the number of executions. The folders are
+# absolute paths: fuzz_cli_arguments works in a scratch folder of its own.
 test-fuzz: deps
 	CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_COMPILER=clang++ -DHYST_BUILD_FUZZERS=ON -DHYST_BUILD_TESTS=OFF \
@@ -89,8 +90,8 @@ test-fuzz: deps
 	  echo "== $$t ($(FUZZ_SECONDS) s)"; \
 	  if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=10 \
-	      -artifact_prefix=$(FUZZ_BUILD)/crashes/$$t/ -print_final_stats=1 \
-	      $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t > $(FUZZ_BUILD)/$$t.log 2>&1; then \
+	      -artifact_prefix=$(CURDIR)/$(FUZZ_BUILD)/crashes/$$t/ -print_final_stats=1 \
+	      $(CURDIR)/$(FUZZ_BUILD)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t > $(FUZZ_BUILD)/$$t.log 2>&1; then \
 	    tail -n 60 $(FUZZ_BUILD)/$$t.log; echo "$$t found a failure: see $(FUZZ_BUILD)/crashes/$$t"; \
 	    exit 1; \
 	  fi; \

@@ -6,7 +6,8 @@
 // (even: simulate, odd: fit). The target works in a scratch folder holding a model file for every
 // registered model ("<name>.json"), a CSV file "d.csv" (columns t, v, y) and a MAT file "d.mat"
 // (v, y), so that arguments can name real files. Arguments with a '/' are refused, so that
-// nothing is ever written outside the scratch folder.
+// nothing is ever written outside the scratch folder. Give libFuzzer absolute corpus paths: the
+// target changes the working folder.
 
 #include <unistd.h>
 

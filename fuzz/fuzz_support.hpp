@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace hyst::fuzz {
 
@@ -18,7 +19,8 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }
 
-//! A private scratch folder for this process, for readers that take a path (created once).
+//! A private scratch folder for this process, for readers that take a path (created once,
+//! removed at exit).
 inline const std::filesystem::path& scratch_folder() {
   static const std::filesystem::path folder = [] {
     const char* base = std::getenv("TMPDIR");
@@ -27,6 +29,12 @@ inline const std::filesystem::path& scratch_folder() {
     std::filesystem::create_directories(path);
     return path;
   }();
+  // Registered after `folder` is complete, so it runs before `folder` is destroyed.
+  [[maybe_unused]] static const bool removed_at_exit =
+      std::atexit([] {
+        std::error_code ignored;
+        std::filesystem::remove_all(scratch_folder(), ignored);
+      }) == 0;
   return folder;
 }
 

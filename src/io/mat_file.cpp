@@ -19,11 +19,13 @@
 #include <fmt/ranges.h>
 
 #include "hyst/core/error.hpp"
+#include "mat_v5_sizes.hpp"
 
 namespace hyst::io {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::check_mat_v5_element_sizes;
 
 struct MatCloser {
   void operator()(mat_t* mat) const { Mat_Close(mat); }
@@ -51,6 +53,7 @@ MatHandle open_for_reading(const fs::path& path) {
   if (stat_result == 0 && status.st_size == 0) {
     throw Error(fmt::format("{}: not a MAT file (the file is empty)", path.string()));
   }
+  check_mat_v5_element_sizes(path);
   MatHandle mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) {
     throw Error(fmt::format("{}: not a MAT file (MATLAB v4, v5 or v7.3 expected)", path.string()));
