@@ -175,7 +175,10 @@ std::string format_table(const Table& table, const CsvWriteOptions& options,
   if (table.names.empty()) throw Error(fmt::format("{}table has no columns", where));
 
   // Names containing the separator, or one that detection prefers to it, would split differently.
-  const std::string_view forbidden = kDetectionOrder.substr(0, position + 1);
+  // A single name has no separator beside it in the header line, so detection would take any
+  // separator character in it.
+  const std::string_view forbidden =
+      table.names.size() == 1 ? kDetectionOrder : kDetectionOrder.substr(0, position + 1);
   for (std::size_t j = 0; j < table.names.size(); ++j) {
     const std::string& name = table.names[j];
     if (const std::string problem = name_problem(name); !problem.empty()) {

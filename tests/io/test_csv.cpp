@@ -403,5 +403,17 @@ TEST(Csv, ColumnNamesStartingWithAByteOrderMarkAreRejected) {
             (std::vector<std::string>{"v", "y"}));
 }
 
+// Found by fuzz/fuzz_csv: a single column named "a b" was written as the header "a b", which
+// read_csv splits at the space into two columns.
+TEST(Csv, ASingleColumnNameMustNotContainAnySeparator) {
+  EXPECT_HYST_ERROR(
+      format_csv(make_table({"a b"}, {{1.0}})),
+      "column 1 name 'a b' contains space, which read_csv would take for a separator");
+  EXPECT_HYST_ERROR(format_csv(make_table({"a;b"}, {{1.0}})), "contains ';'");
+  // Beside a ',' the same names are fine: detection takes the ',' first.
+  const auto table = make_table({"a b", "c"}, {{1.0}, {2.0}});
+  EXPECT_EQ(parse_csv(format_csv(table), "two.csv").names, table.names);
+}
+
 }  // namespace
 }  // namespace hyst::io
