@@ -88,7 +88,8 @@ test-fuzz: deps
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/crashes/$$t; \
 	  echo "== $$t ($(FUZZ_SECONDS) s)"; \
-	  if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  if ! ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp \
+	    UBSAN_OPTIONS=print_stacktrace=1 \
 	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=10 \
 	      -artifact_prefix=$(CURDIR)/$(FUZZ_BUILD)/crashes/$$t/ -print_final_stats=1 \
 	      $(CURDIR)/$(FUZZ_BUILD)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t > $(FUZZ_BUILD)/$$t.log 2>&1; then \
