@@ -1,7 +1,8 @@
 # The two set-up commands of hyst (see README.md):
 #   make demo   install missing Debian packages, build, run the demo (writes out/demo/)
-#   make test   the same set-up, then every test, a short run of every benchmark, and the C++
-#               tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+#   make test   the same set-up, then every test, a short run of every benchmark, the C++
+#               tests again under AddressSanitizer + UndefinedBehaviorSanitizer, and 20 s of
+#               every libFuzzer target (clang, see fuzz/ and docs/reliability.md).
 
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
