@@ -4,6 +4,7 @@
 #   killed        SIGKILL in the middle of writing a large output: the previous file under the
 #                 final name is intact (byte for byte) and no partial file takes its name.
 #   read_only     writing into a read-only folder: one clear error line, the old file intact.
+#   repeatable    the same run twice (simulate; fit) gives the same bytes (the same parameters).
 #   disk_full     a full disk (a 1 MB tmpfs when this process may mount one in a private mount
 #                 namespace; otherwise the file-size limit RLIMIT_FSIZE with SIGXFSZ ignored,
 #                 which makes write() fail part-way with EFBIG exactly like ENOSPC does): one
@@ -136,9 +137,27 @@ case_disk_full() {
   grep -qF "small/out.csv" err.txt || fail "the error does not name the file"
 }
 
+case_repeatable() {
+  good_model m.json
+  input_csv in.csv 5000
+  "$HYST" simulate --model m.json --input in.csv --out a.csv >/dev/null || fail "simulate failed"
+  "$HYST" simulate --model m.json --input in.csv --out b.csv >/dev/null || fail "simulate failed"
+  cmp -s a.csv b.csv || fail "two runs of simulate wrote different files"
+  awk -F, 'NR > 1 { print $1 "," $2 * 0.9 + 0.1 * ($2 > 0) }' a.csv | sed '1i v,y' >data.csv
+  "$HYST" fit pi --data data.csv --input v --output y --out f1.json >/dev/null || fail "fit failed"
+  "$HYST" fit pi --data data.csv --input v --output y --out f2.json >/dev/null || fail "fit failed"
+  # The files differ in the fit report's wall time only: compare parameters and state.
+  /usr/bin/python3 -c 'import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+sys.exit(0 if (a["params"], a["state"]) == (b["params"], b["state"]) else 1)' f1.json f2.json ||
+    fail "two fits of the same data gave different parameters"
+  echo "simulate: identical files; fit: identical parameters and state"
+}
+
 case "${1:-}" in
   killed) case_killed ;;
+  repeatable) case_repeatable ;;
   read_only) case_read_only ;;
   disk_full) case_disk_full ;;
-  *) fail "unknown case '${1:-}' (killed, read_only, disk_full)" ;;
+  *) fail "unknown case '${1:-}' (killed, read_only, disk_full, repeatable)" ;;
 esac
