@@ -1,10 +1,15 @@
 # The two set-up commands of hyst (see README.md):
 #   make demo   install missing Debian packages, build, run the demo (writes out/demo/)
-#   make test   the same set-up, then every test, a short run of every benchmark, and the C++
-#               tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+#   make test   the same set-up, then every test, a short run of every benchmark, the C++
+#               tests again under AddressSanitizer + UndefinedBehaviorSanitizer, and 20 s of
+#               every libFuzzer target (clang, see fuzz/ and docs/reliability.md).
 
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+# Seconds each fuzz target runs in `make test` (docs/reliability.md has the counts of a run).
+FUZZ_SECONDS ?= 20
+FUZZ_TARGETS := fuzz_csv fuzz_mat_file fuzz_model_file fuzz_cli_arguments
 JOBS       ?= $(shell nproc)
 DEMO_OUT   ?= out/demo
 
@@ -12,11 +17,12 @@ DEMO_OUT   ?= out/demo
 DEBIAN_PACKAGES := cmake make g++ pkg-config \
   libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libmatio-dev nlohmann-json3-dev libcli11-dev libceres-dev libboost-dev \
-  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest gnuplot-nox
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest gnuplot-nox \
+  clang libclang-rt-14-dev
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test test-cpp test-python bench-smoke test-sanitize format format-check clean
+.PHONY: all deps configure build demo test test-cpp test-python bench-smoke test-sanitize test-fuzz format format-check clean
 
 all: build
 
@@ -44,7 +50,7 @@ demo: build
 	$(BUILD)/apps/hyst_demo --data ../shared/data --out $(DEMO_OUT)
 
 test: build
-	$(MAKE) test-cpp bench-smoke test-sanitize
+	$(MAKE) test-cpp bench-smoke test-sanitize test-fuzz
 
 test-cpp:
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
@@ -70,6 +76,30 @@ test-sanitize: deps
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
+# Every libFuzzer target (fuzz/) for FUZZ_SECONDS from its committed seed corpus (fuzz/corpus/),
+# built with clang, AddressSanitizer and UndefinedBehaviorSanitizer in a build of its own (library,
+# command line and fuzz targets only). New inputs go to $(FUZZ_BUILD)/corpus/, crashes to
+# $(FUZZ_BUILD)/crashes/; the last line of each log has the number of executions. The folders are
+# absolute paths: fuzz_cli_arguments works in a scratch folder of its own.
+test-fuzz: deps
+	CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_COMPILER=clang++ -DHYST_BUILD_FUZZERS=ON -DHYST_BUILD_TESTS=OFF \
+	  -DHYST_BUILD_BENCHMARKS=OFF -DHYST_BUILD_EXAMPLES=OFF -DHYST_BUILD_PYTHON=OFF
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS)
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/crashes/$$t; \
+	  echo "== $$t ($(FUZZ_SECONDS) s)"; \
+	  if ! ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp \
+	    UBSAN_OPTIONS=print_stacktrace=1 \
+	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=10 \
+	      -artifact_prefix=$(CURDIR)/$(FUZZ_BUILD)/crashes/$$t/ -print_final_stats=1 \
+	      $(CURDIR)/$(FUZZ_BUILD)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t > $(FUZZ_BUILD)/$$t.log 2>&1; then \
+	    tail -n 60 $(FUZZ_BUILD)/$$t.log; echo "$$t found a failure: see $(FUZZ_BUILD)/crashes/$$t"; \
+	    exit 1; \
+	  fi; \
+	  grep -E '^(stat::number_of_executed_units|Done)' $(FUZZ_BUILD)/$$t.log || true; \
+	done; echo "fuzz targets ran without failure"
+
 format:
 	git ls-files '*.hpp' '*.cpp' | xargs clang-format -i
 
@@ -77,4 +107,4 @@ format-check:
 	git ls-files '*.hpp' '*.cpp' | xargs clang-format --dry-run --Werror
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) out

@@ -160,9 +160,18 @@ PYBIND11_MODULE(hyst, module) {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const hyst::Error& error) {
-      py::object instance = py::reinterpret_borrow<py::object>(error_type)(error.what());
+      // Messages quote file content, which need not be UTF-8 (a binary file read as CSV):
+      // undecodable bytes become U+FFFD instead of a UnicodeDecodeError hiding the error.
+      const auto text = [](const std::string& bytes) {
+        PyObject* decoded =
+            PyUnicode_DecodeUTF8(bytes.data(), static_cast<Py_ssize_t>(bytes.size()), "replace");
+        if (!decoded) throw py::error_already_set();
+        return py::reinterpret_steal<py::str>(decoded);
+      };
+      py::object instance =
+          py::reinterpret_borrow<py::object>(error_type)(text(std::string(error.what())));
       instance.attr("field") =
-          error.field().empty() ? py::object(py::none()) : py::object(py::str(error.field()));
+          error.field().empty() ? py::object(py::none()) : py::object(text(error.field()));
       PyErr_SetObject(error_type, instance.ptr());
     }
   });

@@ -4,7 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <iterator>
+#include <string_view>
 #include <system_error>
+#include <unordered_map>
 #include <utility>
 
 #include <fmt/format.h>
@@ -31,6 +33,14 @@ std::string_view trim(std::string_view text) {
 //! "data.csv: " or "" for an unnamed source.
 std::string prefix(std::string_view source) {
   return source.empty() ? std::string() : fmt::format("{}: ", source);
+}
+
+//! A field or name as shown in a message: a long one is cut, so that an error stays one short
+//! line even for a megabyte-long field.
+std::string excerpt(std::string_view text) {
+  constexpr std::size_t kShown = 40;
+  if (text.size() <= kShown + 20) return std::string(text);
+  return fmt::format("{}... ({} characters)", text.substr(0, kShown), text.size());
 }
 
 //! "data.csv:7: " or "line 7: " for an unnamed source.
@@ -82,7 +92,7 @@ char detect_separator(std::string_view header) {
 double parse_number(std::string_view field, std::string_view source, std::size_t line,
                     std::size_t column, std::string_view name) {
   const auto where = [&] {
-    return fmt::format("{}column {} ('{}')", prefix(source, line), column + 1, name);
+    return fmt::format("{}column {} ('{}')", prefix(source, line), column + 1, excerpt(name));
   };
   if (field.empty()) throw Error(fmt::format("{}: empty field, expected a number", where()));
   // from_chars does not accept a leading '+'; accept one, but not "+-1".
@@ -94,14 +104,16 @@ double parse_number(std::string_view field, std::string_view source, std::size_t
     result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   }
   if (result.ec == std::errc::result_out_of_range) {
-    throw Error(fmt::format("{}: '{}' is out of range for a double", where(), field));
+    throw Error(fmt::format("{}: '{}' is out of range for a double", where(), excerpt(field)));
   }
   if (result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
     const bool decimal_comma = field.find(',') != std::string_view::npos;
-    throw Error(fmt::format("{}: '{}' is not a number{}", where(), field,
+    throw Error(fmt::format("{}: '{}' is not a number{}", where(), excerpt(field),
                             decimal_comma ? " (decimal commas are not supported; use '.')" : ""));
   }
-  if (!std::isfinite(value)) throw Error(fmt::format("{}: {} is not finite", where(), field));
+  if (!std::isfinite(value)) {
+    throw Error(fmt::format("{}: {} is not finite", where(), excerpt(field)));
+  }
   return value;
 }
 
@@ -110,6 +122,8 @@ std::string name_problem(std::string_view name) {
   if (name.empty()) return "is empty";
   if (trim(name).size() != name.size()) return "has leading or trailing spaces";
   if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
+  // Written first in a file, it would be read as the file's byte order mark and dropped.
+  if (name.starts_with(kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
   return {};
 }
 
@@ -132,7 +146,10 @@ std::string format_table(const Table& table, const CsvWriteOptions& options,
   if (table.names.empty()) throw Error(fmt::format("{}table has no columns", where));
 
   // Names containing the separator, or one that detection prefers to it, would split differently.
-  const std::string_view forbidden = kDetectionOrder.substr(0, position + 1);
+  // A single name has no separator beside it in the header line, so detection would take any
+  // separator character in it.
+  const std::string_view forbidden =
+      table.names.size() == 1 ? kDetectionOrder : kDetectionOrder.substr(0, position + 1);
   for (std::size_t j = 0; j < table.names.size(); ++j) {
     const std::string& name = table.names[j];
     if (const std::string problem = name_problem(name); !problem.empty()) {
@@ -249,16 +266,21 @@ Table parse_csv(std::string_view text, std::string_view source_name,
   Table table;
   table.source = std::string(source);
   split(line, separator, fields);
+  std::unordered_map<std::string_view, std::size_t> column_of_name;
   for (std::size_t j = 0; j < fields.size(); ++j) {
     if (fields[j].empty()) {
       throw Error(fmt::format("{}column {} of the header has an empty name",
                               prefix(source, header_line), j + 1));
     }
-    for (std::size_t i = 0; i < j; ++i) {
-      if (table.names[i] == fields[j]) {
-        throw Error(fmt::format("{}column {} ('{}') has the same name as column {}",
-                                prefix(source, header_line), j + 1, fields[j], i + 1));
-      }
+    if (const std::string problem = name_problem(fields[j]); !problem.empty()) {
+      throw Error(fmt::format("{}column {} of the header: the name {}", prefix(source, header_line),
+                              j + 1, problem));
+    }
+    // A map, not a pairwise comparison: a header may have a million columns.
+    if (const auto [first, inserted] = column_of_name.emplace(fields[j], j); !inserted) {
+      throw Error(fmt::format("{}column {} ('{}') has the same name as column {}",
+                              prefix(source, header_line), j + 1, excerpt(fields[j]),
+                              first->second + 1));
     }
     table.names.emplace_back(fields[j]);
   }

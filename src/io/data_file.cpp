@@ -74,6 +74,10 @@ std::string DataFile::column_list() const {
 
 std::vector<double> DataFile::column(std::string_view name) const {
   if (aixacct_) return aixacct_->measurements[aixacct_table_].column(name, path_.string()).values;
+  if (!has_column(name) && names_.empty()) {  // e.g. a MAT file cut after its header
+    throw Error(fmt::format("{}: no {} '{}' (the file has none)", path_.string(),
+                            mat_ ? "variable" : "column", name));
+  }
   if (!has_column(name)) {
     throw Error(fmt::format("{}: no {} '{}' ({}: {})", path_.string(), mat_ ? "variable" : "column",
                             name, mat_ ? "variables" : "columns", column_list()));

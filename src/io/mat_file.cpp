@@ -19,11 +19,13 @@
 #include <fmt/ranges.h>
 
 #include "hyst/core/error.hpp"
+#include "mat_sizes.hpp"
 
 namespace hyst::io {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::check_mat_sizes;
 
 struct MatCloser {
   void operator()(mat_t* mat) const { Mat_Close(mat); }
@@ -51,6 +53,7 @@ MatHandle open_for_reading(const fs::path& path) {
   if (stat_result == 0 && status.st_size == 0) {
     throw Error(fmt::format("{}: not a MAT file (the file is empty)", path.string()));
   }
+  check_mat_sizes(path);
   MatHandle mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) {
     throw Error(fmt::format("{}: not a MAT file (MATLAB v4, v5 or v7.3 expected)", path.string()));
@@ -252,6 +255,13 @@ std::vector<double> read_mat_vector(const fs::path& path, std::string_view varia
   for (int d = 0; d < info->rank; ++d)
     count *= info->dims[d];
   if (info->class_type == MAT_C_EMPTY || count == 0) return {};
+  // matio allocates what the dimensions claim before it reads the data; a corrupt file may claim
+  // billions of samples (found by fuzz/fuzz_mat_file). No file holds more samples than bytes,
+  // times the best compression ratio of zlib (1032:1) - allow 2048.
+  if (const auto bytes = fs::file_size(path); count / 2048 > bytes) {
+    throw Error(fmt::format("{} claims {} samples, more than a file of {} bytes can hold", prefix,
+                            dimensions(*info), bytes));
+  }
 
   const VarHandle data(Mat_VarRead(mat.get(), name.c_str()));
   if (!data || data->data == nullptr) throw Error(fmt::format("{} cannot be read", prefix));

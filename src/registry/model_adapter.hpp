@@ -16,9 +16,12 @@
 //                                                         const InverseLimits&);
 //   };
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "../detail/json_fields.hpp"
 #include "hyst/core/invert.hpp"
@@ -50,6 +53,15 @@ class ModelAdapter final : public DynamicModel {
   void reset() override { state_ = model_.initial_state(); }
   void simulate(std::span<const double> input, std::span<double> output) override {
     hyst::simulate(model_, state_, input, output);
+    // Finite inputs can still overflow (e.g. 1e308 times a weight above 1): report, never pass
+    // on infinities as results. One pass over the batch, outside the sample loop.
+    for (std::size_t k = 0; k < output.size(); ++k) {
+      if (!std::isfinite(output[k])) {
+        throw Error(fmt::format("input[{}] = {} gives the output {}: it overflows the model", k,
+                                input[k], output[k]),
+                    "input");
+      }
+    }
   }
   std::size_t parameter_count() const override { return Codec::parameter_count(model_); }
   std::string describe() const override { return Codec::describe(model_); }

@@ -392,5 +392,28 @@ TEST(FormatCsv, RejectsInvalidOptions) {
                     "csv significant_digits = 18 must be in [1, 17]");
 }
 
+// Found by fuzz/fuzz_csv: a second byte order mark became part of the first column's name, which
+// the writer then put at the start of the file, where a reader drops it as the file's own.
+TEST(Csv, ColumnNamesStartingWithAByteOrderMarkAreRejected) {
+  EXPECT_HYST_ERROR(parse_csv("\xEF\xBB\xBF\xEF\xBB\xBFv,y\n1,2\n", "bom.csv"),
+                    "bom.csv:1: column 1 of the header: the name starts with a byte order mark");
+  Table table;
+  EXPECT_HYST_ERROR(table.add_column("\xEF\xBB\xBFv", {1.0}), "byte order mark");
+  EXPECT_EQ(parse_csv("\xEF\xBB\xBFv,y\n1,2\n", "one_bom.csv").names,
+            (std::vector<std::string>{"v", "y"}));
+}
+
+// Found by fuzz/fuzz_csv: a single column named "a b" was written as the header "a b", which
+// read_csv splits at the space into two columns.
+TEST(Csv, ASingleColumnNameMustNotContainAnySeparator) {
+  EXPECT_HYST_ERROR(
+      format_csv(make_table({"a b"}, {{1.0}})),
+      "column 1 name 'a b' contains space, which read_csv would take for a separator");
+  EXPECT_HYST_ERROR(format_csv(make_table({"a;b"}, {{1.0}})), "contains ';'");
+  // Beside a ',' the same names are fine: detection takes the ',' first.
+  const auto table = make_table({"a b", "c"}, {{1.0}, {2.0}});
+  EXPECT_EQ(parse_csv(format_csv(table), "two.csv").names, table.names);
+}
+
 }  // namespace
 }  // namespace hyst::io

@@ -324,5 +324,35 @@ TEST(MatFileMeasuredData, ReadsThePiezoLoops) {
   EXPECT_NEAR(*std::min_element(displacement.begin(), displacement.end()), -162, 1);
 }
 
+// Sizes a file states must fit in the file: matio trusts them and allocates what they claim
+// (inputs found by fuzz/fuzz_mat_file; fuzz/corpus/fuzz_mat_file/regression_*).
+TEST_F(MatFile, RejectsSizesLargerThanTheFile) {
+  // A v4 file written by hand: type 0 (little-endian doubles), 3 x 1, real, name "v".
+  const auto v4_file = [&](const fs::path& path, std::uint32_t name_length) {
+    std::ofstream out(path, std::ios::binary);
+    const std::uint32_t header[5] = {0, 3, 1, 0, name_length};
+    const double values[3] = {0.5, -1.0, 2.0};
+    out.write(reinterpret_cast<const char*>(header), sizeof header);
+    out.write("v", 2);
+    out.write(reinterpret_cast<const char*>(values), sizeof values);
+  };
+  const fs::path good = file("good_v4.mat");
+  v4_file(good, 2);
+  EXPECT_EQ(read_mat_vector(good, "v"), (std::vector<double>{0.5, -1.0, 2.0}));
+  const fs::path bad = file("bad_v4.mat");
+  v4_file(bad, 1'700'000'000);
+  EXPECT_HYST_ERROR(list_mat_variables(bad),
+                    bad.string() +
+                        ": not a valid MAT file: read as v4, the record at byte 0 claims more than "
+                        "the 26 bytes after it");
+
+  // The matrix at byte 128 holds 80 bytes after its 8-byte tag, so it ends at 216; its dimensions
+  // tag at byte 152 leaves 216 - 160 = 56 bytes, but claims 0x54414d08 = 1413565704.
+  const fs::path v5 = fs::path(HYST_TEST_DATA_DIR) / "bad" / "corrupt_element_size.mat";
+  EXPECT_HYST_ERROR(list_mat_variables(v5),
+                    "not a valid MAT file: the element at byte 152 claims 1413565704 bytes but "
+                    "its container has 56 left");
+}
+
 }  // namespace
 }  // namespace hyst::io

@@ -38,7 +38,8 @@ void run(const SimulateOptions& options) {
   try {
     model->simulate(input, output);
   } catch (const Error& error) {
-    throw Error(fmt::format("{} column '{}': {}", source.path().string(), column, error.what()));
+    throw Error(fmt::format("{} column '{}' through the model of {}: {}", source.path().string(),
+                            column, options.model, error.what()));
   }
 
   io::Table table;

@@ -51,7 +51,7 @@ class DynamicModel {
   virtual void reset() = 0;
 
   //! Runs the model over `input` from the current state (advanced); hyst::Error for mismatched
-  //! lengths or non-finite input samples.
+  //! lengths, non-finite input samples or outputs that overflow (not finite).
   virtual void simulate(std::span<const double> input, std::span<double> output) = 0;
 
   //! Number of free parameters (for comparing models).

@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Every bad input the command line may meet, through `hyst`: the committed corpus
+# tests/data/bad/ (what each file is run through, and what its error must name, is listed in
+# tests/data/bad/expected.tsv), larger or binary files generated here, and bad variants of every
+# registered model's example file (tests/cli/mutate_model_file.py; models added to the registry
+# are covered without changes here).
+#
+#     HYST=build/apps/hyst bash tests/cli/bad_input_corpus.sh tests/data/bad
+#
+# Each run is bounded (timeout 10 s) and must end with exit status 1 or 2 and exactly one line on
+# standard error, "hyst: error: ...", naming the file and the place (line, column, field). A
+# crash, a sanitizer report, a hang or a second line fails the test.
+
+set -u
+: "${HYST:?set HYST to the hyst executable}"
+HYST="$(cd "$(dirname "$HYST")" && pwd)/$(basename "$HYST")"
+BAD="$(cd "${1:?usage: bad_input_corpus.sh BAD_FOLDER}" && pwd)"
+HERE="$(cd "$(dirname "$0")" && pwd)"
+PYTHON="${PYTHON:-/usr/bin/python3}"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/hyst-bad-inputs.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK" || exit 1
+
+TRIED=0
+FAILURES=0
+
+# check_error FILE TEXT CMD...: CMD must fail cleanly with one error line naming FILE and TEXT.
+check_error() {
+  local file="$1" text="$2"
+  shift 2
+  TRIED=$((TRIED + 1))
+  timeout 10 "$@" >"$WORK/stdout" 2>"$WORK/stderr"
+  local status=$? lines
+  lines="$(wc -l <"$WORK/stderr")"
+  local problem=""
+  if [ "$status" -eq 124 ]; then
+    problem="did not finish within 10 s"
+  elif [ "$status" -ne 1 ] && [ "$status" -ne 2 ]; then
+    problem="exit status $status (expected 1 or 2)"
+  elif [ "$lines" -ne 1 ]; then
+    problem="$lines lines on standard error (expected 1)"
+  elif ! grep -q '^hyst: error: ' "$WORK/stderr"; then
+    problem="standard error does not start with 'hyst: error: '"
+  elif ! grep -qF -- "$(basename "$file")" "$WORK/stderr"; then
+    problem="the error does not name the file '$(basename "$file")'"
+  elif ! grep -qF -- "$text" "$WORK/stderr"; then
+    problem="the error does not contain '$text'"
+  fi
+  if [ -n "$problem" ]; then
+    FAILURES=$((FAILURES + 1))
+    echo "FAIL: $file: $problem" >&2
+    echo "  command: $*" >&2
+    echo "  stderr: $(head -c 1000 "$WORK/stderr")" >&2
+  else
+    printf '%-45s %s\n' "$(basename "$file")" "$(cut -c1-150 "$WORK/stderr")"
+  fi
+}
+
+# check FILE HOW TEXT: runs FILE the way HOW says (see tests/data/bad/expected.tsv).
+check() {
+  local file="$1" how="$2" text="$3"
+  case "$how" in
+    data) check_error "$file" "$text" "$HYST" simulate --model good.json --input "$file" \
+            --column v --out out.csv ;;
+    fit) check_error "$file" "$text" "$HYST" fit pi --data "$file" --input v --output y \
+           --out fitted.json ;;
+    model) check_error "$file" "$text" "$HYST" simulate --model "$file" --input good.csv \
+             --column v --out out.csv ;;
+    *) echo "FAIL: unknown way '$how' for $file" >&2; FAILURES=$((FAILURES + 1)) ;;
+  esac
+}
+
+# Valid companions: a model file and an input file.
+"$HYST" models pi --json >pi_schema.json || exit 1
+"$PYTHON" -c 'import json,sys; json.dump(json.load(open(sys.argv[1]))["example"], open(sys.argv[2], "w"))' \
+  pi_schema.json good.json || exit 1
+printf 'v,y\n0,0\n0.5,0.4\n1,0.9\n0.2,0.5\n' >good.csv
+
+# 1. The committed corpus.
+listed=0
+while IFS=$'\t' read -r name how text; do
+  case "$name" in '' | '#'*) continue ;; esac
+  [ -e "$BAD/$name" ] || { echo "FAIL: $name is listed but missing" >&2; FAILURES=$((FAILURES + 1)); }
+  listed=$((listed + 1))
+  check "$BAD/$name" "$how" "$text"
+done <"$BAD/expected.tsv"
+for file in "$BAD"/*; do
+  [ "$(basename "$file")" = expected.tsv ] && continue
+  grep -q "^$(basename "$file")	" "$BAD/expected.tsv" ||
+    { echo "FAIL: $file is not listed in expected.tsv" >&2; FAILURES=$((FAILURES + 1)); }
+done
+
+# 2. Generated files: binary noise (fixed seed), a long file with a bad last line, a single
+# huge field, a header of 300001 columns with a repeated name, a cut MAT file.
+awk 'BEGIN { srand(13); for (i = 0; i < 4096; i++) printf "%c", int(rand() * 256) }' </dev/null >noise.bin
+cp noise.bin binary.csv
+cp noise.bin binary.json
+cp noise.bin binary.mat
+check binary.csv data "binary.csv"
+check binary.json model "binary.json"
+check binary.mat data "not a MAT file"
+awk 'BEGIN { print "v,y"; for (i = 0; i < 1000000; i++) print i % 7 "," i % 5; print "3,nan" }' >long.csv
+check long.csv data "long.csv:1000002"
+awk 'BEGIN { printf "v,y\n"; for (i = 0; i < 1000000; i++) printf "9999999999"; printf ",1\n" }' >huge_field.csv
+check huge_field.csv data "huge_field.csv:2"
+awk 'BEGIN { for (i = 0; i < 300000; i++) printf "c%d,", i; print "c0"; print "1" }' >wide.csv
+check wide.csv data "wide.csv:1: column 300001 ('c0') has the same name as column 1"
+head -c 150 "$BAD/mismatched_lengths.mat" >cut.mat
+check cut.mat data "cut.mat"
+
+# 3. Bad variants of every registered model's example file.
+models="$("$HYST" models --json | "$PYTHON" -c 'import json,sys; print(" ".join(m["name"] for m in json.load(sys.stdin)))')" ||
+  exit 1
+[ -n "$models" ] || { echo "FAIL: no models listed" >&2; exit 1; }
+for model in $models; do
+  "$HYST" models "$model" --json >"schema_$model.json" || exit 1
+  while IFS=$'\t' read -r name text; do
+    check "mutated/$name" model "$text"
+  done < <("$PYTHON" "$HERE/mutate_model_file.py" "schema_$model.json" mutated)
+done
+
+echo "bad inputs tried: $TRIED (listed in expected.tsv: $listed; models: $models); failures: $FAILURES"
+[ "$FAILURES" -eq 0 ]

@@ -1,0 +1,140 @@
+// Determinism: the same input and parameters give bit-identical output - one sample at a time
+// (the step loop) or in one batch (simulate), in any chunking, on every re-run and after reset -
+// for every registered model; the concrete models' step() loop equals hyst::simulate() and the
+// registry's batch; fits are reproducible (same data and options: the same parameters, bit for
+// bit).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <span>
+#include <vector>
+
+#include "../support/test_signals.hpp"
+#include "hyst/core/simulate.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/preisach.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst {
+namespace {
+
+bool bit_identical(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// Inside every example model's input range, with reversals at many scales.
+std::vector<double> test_input() {
+  return test::random_walk(20000, 1013, 0.9, 0.05);
+}
+
+std::vector<double> in_one_batch(DynamicModel& model, const std::vector<double>& input) {
+  std::vector<double> output(input.size());
+  model.simulate(input, output);
+  return output;
+}
+
+std::vector<double> sample_by_sample(DynamicModel& model, const std::vector<double>& input) {
+  std::vector<double> output(input.size());
+  for (std::size_t k = 0; k < input.size(); ++k)
+    model.simulate(std::span(input).subspan(k, 1), std::span(output).subspan(k, 1));
+  return output;
+}
+
+// Chunks of 1, 2, 3, ... 97 samples, then again from 1.
+std::vector<double> in_uneven_chunks(DynamicModel& model, const std::vector<double>& input) {
+  std::vector<double> output(input.size());
+  std::size_t chunk = 1;
+  for (std::size_t k = 0; k < input.size(); k += chunk, chunk = chunk % 97 + 1) {
+    const std::size_t n = std::min(chunk, input.size() - k);
+    model.simulate(std::span(input).subspan(k, n), std::span(output).subspan(k, n));
+  }
+  return output;
+}
+
+TEST(Determinism, EveryModelGivesTheSameBitsInAnyChunkingAndOnEveryRun) {
+  const auto input = test_input();
+  for (const auto& entry : ModelRegistry::builtin().entries()) {
+    SCOPED_TRACE(entry.name);
+    const auto batch = in_one_batch(*entry.create(entry.example_params, nullptr), input);
+    EXPECT_TRUE(bit_identical(
+        batch, sample_by_sample(*entry.create(entry.example_params, nullptr), input)));
+    EXPECT_TRUE(bit_identical(
+        batch, in_uneven_chunks(*entry.create(entry.example_params, nullptr), input)));
+    auto model = entry.create(entry.example_params, nullptr);
+    EXPECT_TRUE(bit_identical(batch, in_one_batch(*model, input)));
+    model->reset();
+    EXPECT_TRUE(bit_identical(batch, in_one_batch(*model, input)));
+    // A clone continues exactly like the original.
+    auto copy = model->clone();
+    EXPECT_TRUE(bit_identical(in_one_batch(*model, input), in_one_batch(*copy, input)));
+  }
+}
+
+template <class Model>
+std::vector<double> step_loop(const Model& model, const std::vector<double>& input) {
+  auto state = model.initial_state();
+  std::vector<double> output;
+  for (const double v : input)
+    output.push_back(model.step(state, v));
+  return output;
+}
+
+TEST(Determinism, PrandtlIshlinskiiStepLoopEqualsSimulateAndTheRegistry) {
+  const auto input = test_input();
+  const PrandtlIshlinskii model(
+      {.thresholds = {0.0, 0.3, 0.7, 1.0}, .weights = {0.8, 0.5, 0.3, 0.2}, .offset = 0.1});
+  auto state = model.initial_state();
+  const auto batch = simulate(model, state, input);
+  EXPECT_TRUE(bit_identical(step_loop(model, input), batch));
+  const auto dynamic = ModelRegistry::builtin().find("pi").create(
+      {{"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.1}},
+      nullptr);
+  EXPECT_TRUE(bit_identical(in_one_batch(*dynamic, input), batch));
+}
+
+TEST(Determinism, PreisachStepLoopEqualsSimulateAndTheRegistry) {
+  const auto input = test_input();
+  std::vector<double> weights(preisach_relay_count(21));
+  for (std::size_t k = 0; k < weights.size(); ++k)
+    weights[k] = 1.0 + 0.5 * std::sin(0.37 * static_cast<double>(k));
+  const Preisach model({.everett = {.levels = 21, .lower = -1, .upper = 1, .weights = weights}});
+  auto state = model.initial_state();
+  const auto batch = simulate(model, state, input);
+  EXPECT_TRUE(bit_identical(step_loop(model, input), batch));
+  const auto dynamic =
+      ModelRegistry::builtin()
+          .find("preisach")
+          .create({{"levels", 21}, {"lower", -1.0}, {"upper", 1.0}, {"weights", weights}}, nullptr);
+  EXPECT_TRUE(bit_identical(in_one_batch(*dynamic, input), batch));
+}
+
+// Every fitter, twice on the same data (the example model's response to a random walk): the
+// same parameters and the same report, bit for bit. The fitters draw no random numbers; a fitter
+// that does must take its seed from the options, which are the same here.
+TEST(Determinism, EveryFitIsReproducible) {
+  const auto input = test::random_walk(400, 29, 0.9, 0.08);
+  for (const auto& entry : ModelRegistry::builtin().entries()) {
+    if (!entry.can_fit()) continue;
+    SCOPED_TRACE(entry.name);
+    const auto output = in_one_batch(*entry.create(entry.example_params, nullptr), input);
+    FitRequest request;
+    request.input = input;
+    request.output = output;
+    request.validate_fraction = 0.25;
+    const auto first = entry.fit(request);
+    const auto second = entry.fit(request);
+    EXPECT_EQ(first.model->params(), second.model->params());
+    EXPECT_EQ(first.model->state(), second.model->state());
+    EXPECT_TRUE(
+        bit_identical(in_one_batch(*first.model, input), in_one_batch(*second.model, input)));
+    EXPECT_EQ(first.report.iterations, second.report.iterations);
+    EXPECT_EQ(first.report.final_cost, second.report.final_cost);
+    EXPECT_EQ(first.report.fit.rmse, second.report.fit.rmse);
+  }
+}
+
+}  // namespace
+}  // namespace hyst
