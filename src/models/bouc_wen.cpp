@@ -10,13 +10,13 @@ BoucWen::BoucWen(Params params) : params_(params) {
   rules.finite(params_.beta, "beta", "beta");
   rules.finite(params_.gamma, "gamma", "gamma");
   if (!(params_.beta + params_.gamma > 0.0)) {
-    throw Error(fmt::format("Bouc-Wen beta + gamma = {} + {} = {} must be > 0 (otherwise z is "
+    throw Error(fmt::format("Bouc-Wen beta + gamma = {} + {} = {:.6g} must be > 0 (otherwise z is "
                             "unbounded)",
                             params_.beta, params_.gamma, params_.beta + params_.gamma),
                 "gamma");
   }
   if (!(params_.beta - params_.gamma >= 0.0)) {
-    throw Error(fmt::format("Bouc-Wen beta - gamma = {} - {} = {} must be >= 0 (sigma >= 1/2: "
+    throw Error(fmt::format("Bouc-Wen beta - gamma = {} - {} = {:.6g} must be >= 0 (sigma >= 1/2: "
                             "properly oriented, bounded loops)",
                             params_.beta, params_.gamma, params_.beta - params_.gamma),
                 "beta");

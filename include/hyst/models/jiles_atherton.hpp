@@ -15,7 +15,7 @@
 //! Variant `original` (Jiles & Atherton 1986; the form of the reference): state M_irr,
 //!     M = c M_an + (1 - c) M_irr
 //!     dM_irr/dH = delta_M (M_an - M_irr) / (delta k - alpha (M_an - M_irr))
-//! (H_e uses M of the current state, solved by three fixed-point iterations).
+//! (M is solved from M = c M_an(H + alpha M) + (1 - c) M_irr by Newton's method).
 //!
 //! Variant `venkataraman` (R. Venkataraman, PhD thesis, University of Maryland 1999, eq. (30); the
 //! form used by COMSOL and Altair Flux): state M,
@@ -84,12 +84,17 @@ inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
   return d;
 }
 
-//! Total M for the original variant: M = c M_an(H + alpha M) + (1 - c) M_irr by fixed point.
+//! Total M for the original variant: the root of M - c M_an(H + alpha M) - (1 - c) M_irr, by
+//! Newton's method from `m` (the slope 1 - c alpha dM_an/dH_e >= 1 - alpha M_s / (3 a) > 0).
 template <class T>
 inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, double h, const T& m_irr,
                                 T m) {
-  for (int i = 0; i < 3; ++i)
-    m = p.c * p.ms * langevin((h + p.alpha * m) / p.a) + (1.0 - p.c) * m_irr;
+  for (int i = 0; i < 4; ++i) {
+    const T xe = (h + p.alpha * m) / p.a;
+    const T residual = m - p.c * p.ms * langevin(xe) - (1.0 - p.c) * m_irr;
+    const T slope = 1.0 - p.c * p.alpha * p.ms / p.a * langevin_derivative(xe);
+    m -= residual / slope;
+  }
   return m;
 }
 
