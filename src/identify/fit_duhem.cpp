@@ -81,8 +81,8 @@ DuhemFit fit_duhem(std::span<const double> input, std::span<const double> output
       starts.push_back({alpha, 0.2, 0.4, 0.25, r});
   }
   std::array<double, 5> q{};
-  auto outcome = detail::fit_record(kernel, input, output, options.validate_fraction, starts, ms,
-                                    "Duhem", q);
+  auto outcome =
+      detail::fit_record(kernel, input, output, options.validate_fraction, starts, ms, "Duhem", q);
   Duhem::Params p;
   p.alpha = q[0] * kernel.scale[0];
   p.f_slope = q[1] * kernel.scale[1];

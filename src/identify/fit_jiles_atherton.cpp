@@ -32,7 +32,7 @@ Vector physical_of(const JilesAtherton::Params& p) {
 // Steady-state loop in any scalar type; writes one B per sample when `out` is not null.
 template <class T>
 void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
-              std::span<const double> field, double max_step, T* out) {
+              std::span<const double> field, double max_step, bool periodic, T* out) {
   T m(0.0);
   T m_irr(0.0);
   double h = 0.0;
@@ -43,9 +43,11 @@ void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVarian
       h = target;
     }
   };
-  advance(field.front());
-  for (double value : field)
-    advance(value);
+  if (periodic) {
+    advance(field.front());
+    for (double value : field)
+      advance(value);
+  }
   for (std::size_t k = 0; k < field.size(); ++k) {
     advance(field[k]);
     out[k] = kMu0 * (field[k] + m);
@@ -55,12 +57,13 @@ void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVarian
 class LoopError {
  public:
   LoopError(std::span<const BhLoop> loops, Vector scale, JilesAthertonVariant variant,
-            double max_step, double b_scale)
+            double max_step, double b_scale, bool periodic)
       : loops_(loops.begin(), loops.end()),
         scale_(scale),
         variant_(variant),
         max_step_(max_step),
-        b_scale_(b_scale) {
+        b_scale_(b_scale),
+        periodic_(periodic) {
     for (const auto& loop : loops_)
       residuals_ += loop.field.size();
   }
@@ -76,7 +79,7 @@ class LoopError {
     const double max_step = std::min(max_step_, value_of(p.k) / 20.0);
     std::size_t r = 0;
     for (const auto& loop : loops_) {
-      run_loop(p, variant_, loop.field, max_step, residuals + r);
+      run_loop(p, variant_, loop.field, max_step, periodic_, residuals + r);
       for (std::size_t k = 0; k < loop.field.size(); ++k, ++r) {
         residuals[r] = (residuals[r] - loop.flux_density[k]) / b_scale_;
         if (!std::isfinite(value_of(residuals[r]))) return false;
@@ -91,6 +94,7 @@ class LoopError {
   JilesAthertonVariant variant_;
   double max_step_;
   double b_scale_;
+  bool periodic_;
   std::size_t residuals_ = 0;
 };
 
@@ -114,11 +118,11 @@ std::vector<double> concatenate_measured(std::span<const BhLoop> loops) {
   return all;
 }
 
-std::vector<double> concatenate_simulated(const JilesAtherton& model,
-                                          std::span<const BhLoop> loops) {
+std::vector<double> concatenate_simulated(const JilesAtherton& model, std::span<const BhLoop> loops,
+                                          bool periodic) {
   std::vector<double> all;
   for (const auto& loop : loops) {
-    const auto b = simulate_bh_loop(model, loop.field);
+    const auto b = simulate_bh_loop(model, loop.field, periodic);
     all.insert(all.end(), b.begin(), b.end());
   }
   return all;
@@ -126,13 +130,15 @@ std::vector<double> concatenate_simulated(const JilesAtherton& model,
 
 }  // namespace
 
-std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const double> field) {
+std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const double> field,
+                                     bool periodic) {
   require_not_empty(field.size(), "field");
   require_finite(field, "field");
   const auto& p = model.params();
   const detail::JilesAthertonCoefficients<double> c{p.ms, p.a, p.k, p.c, p.alpha};
   std::vector<double> b(field.size());
-  run_loop(c, p.variant, field, p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0, b.data());
+  run_loop(c, p.variant, field, p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0, periodic,
+           b.data());
   return b;
 }
 
@@ -224,7 +230,7 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
       q[i] = physical[i] / scale[i];
     q_starts.push_back(q);
   }
-  const LoopError functor(loops, scale, options.variant, max_step, b_scale);
+  const LoopError functor(loops, scale, options.variant, max_step, b_scale, options.periodic);
   const auto result = detail::multistart_fit(functor, q_starts, ms, "Jiles-Atherton");
 
   JilesAtherton::Params fitted;
@@ -246,10 +252,11 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   report.initial_cost = result.initial_cost * b_scale * b_scale;
   report.final_cost = result.final_cost * b_scale * b_scale;
   report.parameters = kParameters;
-  report.fit = error_metrics(concatenate_measured(loops), concatenate_simulated(model, loops));
+  report.fit = error_metrics(concatenate_measured(loops),
+                             concatenate_simulated(model, loops, options.periodic));
   if (!validation.empty()) {
-    report.validation =
-        error_metrics(concatenate_measured(validation), concatenate_simulated(model, validation));
+    report.validation = error_metrics(concatenate_measured(validation),
+                                      concatenate_simulated(model, validation, options.periodic));
   }
   report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();

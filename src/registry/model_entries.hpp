@@ -8,5 +8,10 @@ namespace hyst::detail {
 ModelEntry prandtl_ishlinskii_entry();
 ModelEntry generalized_prandtl_ishlinskii_entry();
 ModelEntry preisach_entry();
+ModelEntry bouc_wen_entry();
+ModelEntry bouc_wen_oscillator_entry();
+ModelEntry duhem_entry();
+ModelEntry backlash_like_entry();
+ModelEntry jiles_atherton_entry();
 
 }  // namespace hyst::detail

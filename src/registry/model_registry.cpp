@@ -15,6 +15,11 @@ const ModelRegistry& ModelRegistry::builtin() {
     r.add(detail::prandtl_ishlinskii_entry());
     r.add(detail::generalized_prandtl_ishlinskii_entry());
     r.add(detail::preisach_entry());
+    r.add(detail::bouc_wen_entry());
+    r.add(detail::bouc_wen_oscillator_entry());
+    r.add(detail::duhem_entry());
+    r.add(detail::backlash_like_entry());
+    r.add(detail::jiles_atherton_entry());
     return r;
   }();
   return registry;

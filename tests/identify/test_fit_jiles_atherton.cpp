@@ -1,5 +1,6 @@
 // Jiles-Atherton fit: simulated loops from known parameters are recovered in seconds with an honest
-// status; on the measured Mn-Zn ferrite loops the fit of the largest loop predicts the smaller ones.
+// status; on the measured Mn-Zn ferrite loops the fit of the largest loop predicts the smaller
+// ones.
 
 #include <chrono>
 #include <filesystem>

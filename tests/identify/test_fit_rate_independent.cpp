@@ -17,7 +17,8 @@ namespace {
 std::vector<double> excitation() {  // decaying and growing loops: minor loops included
   std::vector<double> v(800);
   for (std::size_t k = 0; k < v.size(); ++k)
-    v[k] = 2.0 * std::sin(2 * M_PI * k / 200.0) * (0.4 + 0.6 * std::abs(std::sin(M_PI * k / 800.0)));
+    v[k] =
+        2.0 * std::sin(2 * M_PI * k / 200.0) * (0.4 + 0.6 * std::abs(std::sin(M_PI * k / 800.0)));
   return v;
 }
 

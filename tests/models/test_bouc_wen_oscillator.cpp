@@ -16,8 +16,8 @@
 namespace hyst {
 namespace {
 
-const std::filesystem::path kData = std::filesystem::path(HYST_SHARED_DATA_DIR) /
-                                    "boucwen_benchmark";
+const std::filesystem::path kData =
+    std::filesystem::path(HYST_SHARED_DATA_DIR) / "boucwen_benchmark";
 
 double rms_difference(std::span<const double> a, std::span<const double> b) {
   double sum = 0.0;
@@ -62,8 +62,8 @@ TEST(BoucWenOscillator, PublishedParametersReproduceTheSineSweepTestOutput) {
   auto params = BoucWenOscillator::benchmark();
   params.sample_time /= kFactor;
   params.substeps = 1;
-  const auto simulated = simulate_bouc_wen_oscillator(
-      BoucWenOscillator(params), upsample_band_limited(u, kFactor), kFactor);
+  const auto simulated = simulate_bouc_wen_oscillator(BoucWenOscillator(params),
+                                                      upsample_band_limited(u, kFactor), kFactor);
   EXPECT_LT(rms_difference(simulated, y), 7.3e-7);
 }
 
@@ -78,8 +78,8 @@ TEST(BoucWenOscillator, ConvergesToFineStepReference) {
   const auto reference = simulate_bouc_wen_oscillator(BoucWenOscillator(fine_p), u, 1);
   for (std::size_t substeps : {2, 4, 8}) {
     p.substeps = substeps;
-    errors.push_back(rms_difference(simulate_bouc_wen_oscillator(BoucWenOscillator(p), u, 1),
-                                    reference));
+    errors.push_back(
+        rms_difference(simulate_bouc_wen_oscillator(BoucWenOscillator(p), u, 1), reference));
   }
   // |y'| and |z| are not smooth where y' or z cross zero, so the observed order is below 4;
   // the error still falls steadily towards the reference (output amplitude ~1e-3 m).

@@ -8,9 +8,9 @@
 //!
 //! Each loop is simulated in steady state: from the demagnetised state the field rises to the
 //! loop's first sample, the loop is run once (warm-up), and the residuals are taken on the second
-//! pass (a measured loop is one period of a periodic excitation). The sub-step in H is fixed
-//! during the fit (max_field_step, default the largest loop's peak-to-peak field / 2000) so that
-//! the cost is a smooth function of k; the returned model keeps that step.
+//! pass (a measured loop is one period of a periodic excitation). The sub-step in H is
+//! min(max_field_step, k / 20), max_field_step by default the largest loop's peak-to-peak field /
+//! 2000 (dM/dH ~ 1/k: larger steps make RK4 unstable for small k); the returned model keeps it.
 //!
 //! Method: Levenberg-Marquardt (Ceres, dense QR) with automatic derivatives through the RK4
 //! integration (ceres::Jet), parameters scaled by the first start. Starts (from the data):
@@ -40,6 +40,9 @@ struct JilesAthertonFitOptions {
   std::size_t screening_iterations = 8;
   std::size_t max_iterations = 200;
   double function_tolerance = 1e-12;
+  //! true: every loop is one period in steady state (file comment); false: every record starts
+  //! from the demagnetised state at H = 0 (e.g. a first-magnetisation record).
+  bool periodic = true;
 };
 
 struct JilesAthertonFit {
@@ -56,8 +59,10 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
                                     std::span<const BhLoop> validation,
                                     const JilesAthertonFitOptions& options);
 
-//! The steady-state B of a loop (demagnetised, rise to the first sample, one warm-up period).
-std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const double> field);
+//! B along a loop: periodic = steady state (demagnetised, rise to the first sample, one warm-up
+//! period), otherwise from the demagnetised state at H = 0.
+std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const double> field,
+                                     bool periodic = true);
 
 //! The data-derived starts of the file comment.
 std::vector<JilesAtherton::Params> jiles_atherton_starts(const BhLoop& loop,

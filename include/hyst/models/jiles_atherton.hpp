@@ -56,6 +56,7 @@ inline T langevin(const T& x) {
     const T x2 = x * x;
     return x * (1.0 / 3.0 - x2 * (1.0 / 45.0 - x2 * (2.0 / 945.0)));
   }
+  if (abs(x) > 40.0) return (x > 0.0 ? 1.0 : -1.0) - 1.0 / x;  // coth x = +-1 to 1e-34
   return 1.0 / tanh(x) - 1.0 / x;
 }
 
@@ -67,6 +68,7 @@ inline T langevin_derivative(const T& x) {
     const T x2 = x * x;
     return 1.0 / 3.0 - x2 * (1.0 / 15.0 - x2 * (2.0 / 189.0));
   }
+  if (abs(x) > 40.0) return 1.0 / (x * x);  // 1/sinh^2 < 1e-34; sinh overflows beyond 710
   const T s = sinh(x);
   return 1.0 / (x * x) - 1.0 / (s * s);
 }

@@ -60,6 +60,29 @@ inline Termination termination_of_ceres(const ceres::Solver::Summary& summary) {
   return Termination::failed;
 }
 
+inline bool all_finite(double x) {
+  return std::isfinite(x);
+}
+template <class T, int M>
+bool all_finite(const ceres::Jet<T, M>& x) {
+  return std::isfinite(x.a) && x.v.allFinite();
+}
+
+// The functor with a check that every residual and derivative is finite: a step that overflows
+// is reported to Ceres as infeasible (it then shortens the step) instead of as NaN.
+template <class Functor>
+struct FiniteResiduals {
+  Functor functor;
+  template <class T>
+  bool operator()(const T* q, T* residuals) const {
+    if (!functor(q, residuals)) return false;
+    for (std::size_t r = 0; r < functor.residuals(); ++r) {
+      if (!all_finite(residuals[r])) return false;
+    }
+    return true;
+  }
+};
+
 template <std::size_t N, class Functor>
 double least_squares_cost(const Functor& functor, const std::array<double, N>& q) {
   std::vector<double> residuals(functor.residuals());
@@ -74,8 +97,9 @@ template <std::size_t N, class Functor>
 ceres::Solver::Summary solve_bounded(const Functor& functor, std::array<double, N>& q,
                                      const MultistartOptions<N>& options, std::size_t iterations) {
   ceres::Problem problem;
-  auto* cost = new ceres::AutoDiffCostFunction<Functor, ceres::DYNAMIC, static_cast<int>(N)>(
-      new Functor(functor), static_cast<int>(functor.residuals()));
+  auto* cost = new ceres::AutoDiffCostFunction<FiniteResiduals<Functor>, ceres::DYNAMIC,
+                                               static_cast<int>(N)>(
+      new FiniteResiduals<Functor>{functor}, static_cast<int>(functor.residuals()));
   problem.AddResidualBlock(cost, nullptr, q.data());
   for (std::size_t i = 0; i < N; ++i) {
     problem.SetParameterLowerBound(q.data(), static_cast<int>(i), options.lower[i]);

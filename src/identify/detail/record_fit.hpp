@@ -83,8 +83,8 @@ RecordFitOutcome fit_record(const Kernel& kernel, std::span<const double> input,
   const auto n_fit = static_cast<std::size_t>(
       std::round(static_cast<double>(input.size()) * (1.0 - validate_fraction)));
   if (n_fit < 2 * N) {
-    throw Error(fmt::format("{} fit needs at least {} samples in the fit part, got {}", what,
-                            2 * N, n_fit));
+    throw Error(fmt::format("{} fit needs at least {} samples in the fit part, got {}", what, 2 * N,
+                            n_fit));
   }
   double sum = 0.0;
   for (std::size_t k = 0; k < n_fit; ++k)
