@@ -4,7 +4,8 @@
 //    outputs - if the input is interpolated band-limited between the samples (the data were made
 //    that way), not held or linear.
 // 2. Identification: the grey-box oscillator (m, c, k, alpha, beta gamma, beta delta) is fitted to
-//    the estimation record uest/yest by simulation-error minimisation (Ceres, autodiff through RK4).
+//    the estimation record uest/yest by simulation-error minimisation (Ceres, autodiff through
+//    RK4).
 // 3. Free-run simulation of the fitted model on the two test sets; the RMS error in metres is the
 //    benchmark's figure of merit (best published multisine result 7.53e-6 m, gr-SS-NN).
 //
@@ -82,12 +83,12 @@ int main(int argc, char** argv) {
   const auto y_est = hyst::io::read_mat_vector(data / "yest_multisine.mat", "y");
 
   // 1. The published parameters.
-  const auto published = test_errors(at_fine_rate(hyst::BoucWenOscillator::benchmark()), u_ms,
-                                     y_ms, u_ss, y_ss);
-  std::printf("published parameters: RMS difference to yval_multisine %.3g m (steady state), "
-              "%.3g m (from rest); to yval_sinesweep %.3g m\n",
-              published.multisine_steady, published.multisine_from_rest,
-              published.sinesweep_from_rest);
+  const auto published =
+      test_errors(at_fine_rate(hyst::BoucWenOscillator::benchmark()), u_ms, y_ms, u_ss, y_ss);
+  std::printf(
+      "published parameters: RMS difference to yval_multisine %.3g m (steady state), "
+      "%.3g m (from rest); to yval_sinesweep %.3g m\n",
+      published.multisine_steady, published.multisine_from_rest, published.sinesweep_from_rest);
 
   // 2. Fit on the estimation record: 4 identical periods of 8192 samples; the first period is
   //    simulated from rest and not compared (transient), the others are.
@@ -102,15 +103,17 @@ int main(int argc, char** argv) {
   const auto fit = hyst::fit_bouc_wen_oscillator(std::span(&record, 1), options);
   std::printf("%s\n", fit.report.brief().c_str());
   const auto& p = fit.model.params();
-  std::printf("fitted: m = %.6g kg, c = %.6g N s/m, k = %.6g N/m, alpha = %.6g N/m, "
-              "beta gamma = %.6g, beta delta = %.6g (published 2, 10, 5e4, 5e4, 800, -1100)\n",
-              p.mass, p.damping, p.stiffness, p.alpha, p.beta * p.gamma, p.beta * p.delta);
+  std::printf(
+      "fitted: m = %.6g kg, c = %.6g N s/m, k = %.6g N/m, alpha = %.6g N/m, "
+      "beta gamma = %.6g, beta delta = %.6g (published 2, 10, 5e4, 5e4, 800, -1100)\n",
+      p.mass, p.damping, p.stiffness, p.alpha, p.beta * p.gamma, p.beta * p.delta);
 
   // 3. Free-run simulation on the test sets.
   const auto fitted = test_errors(fit.model, u_ms, y_ms, u_ss, y_ss);
-  std::printf("fitted model, test RMSE: multisine %.3g m (steady state), %.3g m (from rest); "
-              "sine sweep %.3g m (from rest)\n",
-              fitted.multisine_steady, fitted.multisine_from_rest, fitted.sinesweep_from_rest);
+  std::printf(
+      "fitted model, test RMSE: multisine %.3g m (steady state), %.3g m (from rest); "
+      "sine sweep %.3g m (from rest)\n",
+      fitted.multisine_steady, fitted.multisine_from_rest, fitted.sinesweep_from_rest);
   std::printf("best published multisine RMSE 7.53e-6 m (gr-SS-NN): %.0fx better\n",
               7.53e-6 / fitted.multisine_steady);
   return fit.report.termination != hyst::Termination::failed && fitted.multisine_steady < 7.53e-6

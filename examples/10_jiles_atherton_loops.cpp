@@ -26,8 +26,8 @@ namespace {
 
 std::string fmt_status(const hyst::FitReport& report) {
   char text[96];
-  std::snprintf(text, sizeof text, "%s, %.1f s", std::string(hyst::to_string(report.termination)).c_str(),
-                report.seconds);
+  std::snprintf(text, sizeof text, "%s, %.1f s",
+                std::string(hyst::to_string(report.termination)).c_str(), report.seconds);
   return text;
 }
 
@@ -45,8 +45,9 @@ int main(int argc, char** argv) {
     materials = {"MnZn_ferrite", "M130_27s", "amorf"};
     variants.push_back(hyst::JilesAthertonVariant::venkataraman);
   }
-  std::printf("| material | variant | loop, H amplitude | role | NRMSE | fit status, time |\n"
-              "|---|---|---|---|---:|---|\n");
+  std::printf(
+      "| material | variant | loop, H amplitude | role | NRMSE | fit status, time |\n"
+      "|---|---|---|---|---:|---|\n");
   bool ok = true;
   std::optional<hyst::JilesAtherton> ferrite;
   for (const auto& material : materials) {
@@ -74,9 +75,10 @@ int main(int argc, char** argv) {
                     j + 1 == h.size() ? fmt_status(fit.report).c_str() : "");
       }
       const auto& p = fit.model.params();
-      std::printf("|   | parameters | M_s = %.4g A/m, a = %.4g A/m, k = %.4g A/m, c = %.3g, "
-                  "alpha = %.3g | | | |\n",
-                  p.ms, p.a, p.k, p.c, p.alpha);
+      std::printf(
+          "|   | parameters | M_s = %.4g A/m, a = %.4g A/m, k = %.4g A/m, c = %.3g, "
+          "alpha = %.3g | | | |\n",
+          p.ms, p.a, p.k, p.c, p.alpha);
       if (material == "MnZn_ferrite" && !ferrite) ferrite.emplace(fit.model);
     }
   }
@@ -86,15 +88,15 @@ int main(int argc, char** argv) {
   auto state = model.initial_state();
   const double path[] = {80, -80, 80, 20, 50, 20, -10, 30, -80};
   double h_now = 0.0;
-  std::printf("\nferrite model along H = 0 -> 80 -> -80 -> 80 -> 20 -> 50 -> 20 -> -10 -> 30 -> "
-              "-80 A/m:\n");
+  std::printf(
+      "\nferrite model along H = 0 -> 80 -> -80 -> 80 -> 20 -> 50 -> 20 -> -10 -> 30 -> "
+      "-80 A/m:\n");
   for (double target : path) {
     for (int i = 1; i <= 50; ++i)
       model.step(state, h_now + (target - h_now) * i / 50.0);
     h_now = target;
     std::printf("  H = %6.1f A/m: B = %+.4f T, dB/dH = %.4g H/m (mu_r,diff = %.0f)\n", h_now,
-                model.flux_density(state), model.tangent(state),
-                model.tangent(state) / hyst::kMu0);
+                model.flux_density(state), model.tangent(state), model.tangent(state) / hyst::kMu0);
   }
   return ok ? 0 : 1;
 }

@@ -198,14 +198,10 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;
-  std::vector<Vector> q_starts;
-  for (const auto& start : starts) {
-    const Vector physical = physical_of(start);
-    Vector q{};
-    for (std::size_t i = 0; i < kParameters; ++i)
-      q[i] = physical[i] / scale[i];
-    q_starts.push_back(q);
-  }
+  std::vector<Vector> physical_starts;
+  for (const auto& start : starts)
+    physical_starts.push_back(physical_of(start));
+  const auto q_starts = detail::scaled_starts(physical_starts, scale);
 
   double sum_squares = 0.0;
   std::size_t count = 0;
@@ -235,15 +231,9 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
   fitted.input_between_samples = BoucWenOscillator::InputBetweenSamples::linear;
   BoucWenOscillator model(fitted);
 
-  FitReport report;
-  report.model = "bouc_wen_oscillator";
-  report.method = "levenberg-marquardt (ceres, autodiff through RK4), simulation error";
-  report.termination = result.termination;
-  report.message = result.message;
-  report.iterations = result.iterations;
-  report.initial_cost = result.initial_cost * y_scale * y_scale;
-  report.final_cost = result.final_cost * y_scale * y_scale;
-  report.parameters = options.fit_nu ? 7 : 6;
+  FitReport report =
+      detail::report_of(result, y_scale, options.fit_nu ? 7 : 6, "bouc_wen_oscillator",
+                        "levenberg-marquardt (ceres, autodiff through RK4), simulation error");
   std::vector<double> measured, predicted;
   for (const auto& record : records) {
     const auto simulated = simulate_bouc_wen_oscillator(model, record.input, record.oversampling);

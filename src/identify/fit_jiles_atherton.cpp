@@ -168,7 +168,7 @@ std::vector<JilesAtherton::Params> jiles_atherton_starts(const BhLoop& loop,
   if (!(m_max > 0.0)) throw Error("Jiles-Atherton fit: the loop has no magnetisation");
   std::vector<JilesAtherton::Params> starts;
   for (double a_factor : {1.0, 3.0}) {
-    for (double c : {0.1, 0.5}) {
+    for (double c : {0.2, 0.8}) {
       for (double coupling : {0.0, 1.0}) {
         JilesAtherton::Params p;
         p.ms = 1.1 * m_max;
@@ -222,14 +222,10 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;
-  std::vector<Vector> q_starts;
-  for (const auto& start : starts) {
-    const Vector physical = physical_of(start);
-    Vector q{};
-    for (std::size_t i = 0; i < kParameters; ++i)
-      q[i] = physical[i] / scale[i];
-    q_starts.push_back(q);
-  }
+  std::vector<Vector> physical_starts;
+  for (const auto& start : starts)
+    physical_starts.push_back(physical_of(start));
+  const auto q_starts = detail::scaled_starts(physical_starts, scale);
   const LoopError functor(loops, scale, options.variant, max_step, b_scale, options.periodic);
   const auto result = detail::multistart_fit(functor, q_starts, ms, "Jiles-Atherton");
 
@@ -243,15 +239,9 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   fitted.max_field_step = std::min(max_step, fitted.k / 20.0);
   JilesAtherton model(fitted);
 
-  FitReport report;
-  report.model = "jiles_atherton";
-  report.method = "levenberg-marquardt (ceres, autodiff through RK4), steady-state loops";
-  report.termination = result.termination;
-  report.message = result.message;
-  report.iterations = result.iterations;
-  report.initial_cost = result.initial_cost * b_scale * b_scale;
-  report.final_cost = result.final_cost * b_scale * b_scale;
-  report.parameters = kParameters;
+  FitReport report =
+      detail::report_of(result, b_scale, kParameters, "jiles_atherton",
+                        "levenberg-marquardt (ceres, autodiff through RK4), steady-state loops");
   report.fit = error_metrics(concatenate_measured(loops),
                              concatenate_simulated(model, loops, options.periodic));
   if (!validation.empty()) {

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ceres/ceres.h>
@@ -180,6 +181,37 @@ MultistartResult<N> multistart_fit(const Functor& functor,
                          options.upper[i] - result.q[i] <= 1e-6 * width;
   }
   return result;
+}
+
+// Starting points divided by the parameter scale (the fitters iterate q = physical / scale).
+template <std::size_t N>
+std::vector<std::array<double, N>> scaled_starts(const std::vector<std::array<double, N>>& physical,
+                                                 const std::array<double, N>& scale) {
+  std::vector<std::array<double, N>> starts;
+  for (const auto& start : physical) {
+    std::array<double, N> q{};
+    for (std::size_t i = 0; i < N; ++i)
+      q[i] = start[i] / scale[i];
+    starts.push_back(q);
+  }
+  return starts;
+}
+
+// The common part of a FitReport: how Ceres ended and the costs, the residuals having been divided
+// by `residual_scale` (output units).
+template <std::size_t N>
+FitReport report_of(const MultistartResult<N>& result, double residual_scale,
+                    std::size_t parameters, std::string model, std::string method) {
+  FitReport report;
+  report.model = std::move(model);
+  report.method = std::move(method);
+  report.termination = result.termination;
+  report.message = result.message;
+  report.iterations = result.iterations;
+  report.initial_cost = result.initial_cost * residual_scale * residual_scale;
+  report.final_cost = result.final_cost * residual_scale * residual_scale;
+  report.parameters = parameters;
+  return report;
 }
 
 }  // namespace hyst::detail

@@ -94,13 +94,7 @@ RecordFitOutcome fit_record(const Kernel& kernel, std::span<const double> input,
   const RecordError<Kernel> functor(kernel, input.first(n_fit), output.first(n_fit), y_scale);
   const auto result = multistart_fit(functor, starts, options, what);
   q = result.q;
-  FitReport report;
-  report.termination = result.termination;
-  report.message = result.message;
-  report.iterations = result.iterations;
-  report.initial_cost = result.initial_cost * y_scale * y_scale;
-  report.final_cost = result.final_cost * y_scale * y_scale;
-  report.parameters = N - options.fixed.size();
+  FitReport report = report_of(result, y_scale, N - options.fixed.size(), "", "");
   const auto simulated = functor.simulate(q.data(), input, output.front());
   report.fit = error_metrics(output.first(n_fit), std::span(simulated).first(n_fit));
   if (n_fit < input.size()) {
