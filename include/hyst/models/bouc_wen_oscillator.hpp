@@ -7,7 +7,8 @@
 //!     z' = alpha y' - beta (gamma |y'| |z|^(nu-1) z + delta y' |z|^nu)
 //!
 //! Parameters: mass m [kg] > 0, damping c [N s/m] >= 0, stiffness k [N/m] >= 0, alpha [N/m] > 0,
-//! beta [1/m^nu... ] >= 0, gamma and delta [-] any reals, nu >= 1; the sample time Ts [s] > 0.
+//! beta >= 0 (beta gamma |z|^(nu-1) in 1/m), gamma and delta [-] any reals, nu >= 1; the sample
+//! time Ts [s] > 0.
 //! Published values (benchmark()): m = 2, c = 10, k = 5e4, alpha = 5e4, beta = 1e3, gamma = 0.8,
 //! delta = -1.1, nu = 1, Ts = 1/750 s.
 //!
@@ -82,7 +83,7 @@ class BoucWenOscillator {
     double damping = 10.0;             //!< c [N s/m] >= 0
     double stiffness = 5e4;            //!< k [N/m] >= 0
     double alpha = 5e4;                //!< [N/m] > 0
-    double beta = 1e3;                 //!< [m^-nu N^(1-nu)] >= 0
+    double beta = 1e3;                 //!< >= 0 (beta gamma |z|^(nu-1) in 1/m)
     double gamma = 0.8;                //!< [-]
     double delta = -1.1;               //!< [-]
     double nu = 1.0;                   //!< [-] >= 1
