@@ -51,8 +51,8 @@ class SimulationError {
       const std::size_t n = record.output.size();
       for (std::size_t k = 0; k < n; ++k) {
         // Output sample k belongs to input sample k * oversampling: advance up to it.
-        for (std::size_t index = (k == 0 ? 1 : (k - 1) * record.oversampling + 1);
-             k > 0 && index <= k * record.oversampling; ++index) {
+        for (std::size_t index = (k == 0 ? 0 : (k - 1) * record.oversampling + 1);
+             index <= k * record.oversampling; ++index) {
           const double u = record.input[index];
           detail::bouc_wen_oscillator_advance(p, x, previous, u, dt_, substeps_, true, nu_is_one);
           previous = u;
@@ -105,7 +105,7 @@ std::vector<double> simulate_bouc_wen_oscillator(const BoucWenOscillator& model,
   auto state = model.initial_state();
   if (!input.empty()) state.previous_input = input.front();
   for (std::size_t i = 0; i < input.size(); ++i) {
-    const double y = i == 0 ? state.displacement : model.step(state, input[i]);
+    const double y = model.step(state, input[i]);
     if (i % oversampling == 0) output[i / oversampling] = y;
   }
   return output;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "hyst/core/simulate.hpp"
 #include "hyst/identify/fit_bouc_wen_oscillator.hpp"
 #include "hyst/io/mat_file.hpp"
 #include "hyst/models/bouc_wen_oscillator.hpp"
@@ -86,6 +87,18 @@ TEST(BoucWenOscillator, ConvergesToFineStepReference) {
   EXPECT_GT(errors[0] / errors[1], 3.0);
   EXPECT_GT(errors[1] / errors[2], 3.0);
   EXPECT_LT(errors[2], 2e-9);
+}
+
+TEST(BoucWenOscillator, RecordSimulationEqualsSteppingTheModel) {
+  // The fitter's simulation and hyst::simulate() share one convention (rest one sample before).
+  std::vector<double> u(500);
+  for (std::size_t k = 0; k < u.size(); ++k)
+    u[k] = 5.0 + 30.0 * std::sin(0.07 * k);
+  const BoucWenOscillator model(BoucWenOscillator::benchmark());
+  auto state = model.initial_state();
+  state.previous_input = u.front();
+  const auto stepped = simulate(model, state, u);
+  EXPECT_EQ(simulate_bouc_wen_oscillator(model, u, 1), stepped);
 }
 
 TEST(BoucWenOscillator, RejectsInvalidParameters) {

@@ -78,7 +78,9 @@ std::vector<BoucWenOscillator::Params> bouc_wen_oscillator_starts(std::span<cons
                                                                   double sample_time);
 
 //! Free-run simulation of a record from rest (input oversampled as in the record), one output per
-//! output sample.
+//! output sample. As in BoucWenOscillator::step(), the rest state lies one input sample before the
+//! record (previous input = first input), so the result equals hyst::simulate() of the model with
+//! that state when oversampling is 1.
 std::vector<double> simulate_bouc_wen_oscillator(const BoucWenOscillator& model,
                                                  std::span<const double> input,
                                                  std::size_t oversampling);
