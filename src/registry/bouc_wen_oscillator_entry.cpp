@@ -27,6 +27,7 @@ struct BoucWenOscillatorCodec {
             {"nu", p.nu},
             {"sample_time", p.sample_time},
             {"substeps", p.substeps},
+            {"tolerance", p.tolerance},
             {"input_between_samples", std::string(to_string(p.input_between_samples))}};
   }
   static Model::Params params_from_json(JsonFields& fields) {
@@ -41,6 +42,7 @@ struct BoucWenOscillatorCodec {
     p.nu = fields.number_or("nu", p.nu);
     p.sample_time = fields.number("sample_time");
     p.substeps = fields.count_or("substeps", p.substeps);
+    p.tolerance = fields.number_or("tolerance", p.tolerance);
     if (fields.has("input_between_samples")) {
       p.input_between_samples =
           fields.parsed("input_between_samples", input_between_samples_from_string);
@@ -126,6 +128,7 @@ ModelEntry bouc_wen_oscillator_entry() {
       {"nu", "number", "-", ">= 1 (default 1)"},
       {"sample_time", "number", "s", "Ts > 0 (benchmark: 1/750)"},
       {"substeps", "whole number", "", "RK4 steps per sample (20)"},
+      {"tolerance", "number", "", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
       {"input_between_samples", "string", "", "linear (default) or hold"},
   };
   entry.fit_options = {

@@ -101,6 +101,24 @@ TEST(BoucWenOscillator, RecordSimulationEqualsSteppingTheModel) {
   EXPECT_EQ(simulate_bouc_wen_oscillator(model, u, 1), stepped);
 }
 
+TEST(BoucWenOscillator, AdaptiveDormandPrinceMeetsItsTolerance) {
+  std::vector<double> u(1500);
+  for (std::size_t k = 0; k < u.size(); ++k)
+    u[k] = 40.0 * std::sin(0.05 * k + 1e-5 * k * k);
+  auto p = BoucWenOscillator::benchmark();
+  p.substeps = 400;
+  const auto reference = simulate_bouc_wen_oscillator(BoucWenOscillator(p), u, 1);
+  p.substeps = 1;
+  std::vector<double> errors;
+  for (double tolerance : {1e-5, 1e-10}) {
+    p.tolerance = tolerance;
+    errors.push_back(
+        rms_difference(simulate_bouc_wen_oscillator(BoucWenOscillator(p), u, 1), reference));
+  }
+  EXPECT_LT(errors[1], 2e-9);              // output amplitude ~1e-3 m
+  EXPECT_GT(errors[0], 10.0 * errors[1]);  // the tolerance controls the error
+}
+
 TEST(BoucWenOscillator, RejectsInvalidParameters) {
   auto p = BoucWenOscillator::benchmark();
   p.mass = 0.0;

@@ -19,17 +19,22 @@
 //! (fit_bouc_wen_oscillator.hpp) identifies m, c, k, alpha, beta gamma, beta delta (and nu).
 //!
 //! Integration: the state (y, y', z) is advanced over each sample with `substeps` classical RK4
-//! steps; the input between two samples is the straight line between them (`linear`, default) or
-//! held at the new value (`hold`). The benchmark's data were made from a band-limited input, so
-//! to reproduce them drive the model with the input upsampled by a band-limited interpolator
-//! (signals/band_limited.hpp) and a sample time Ts / factor; see docs/results.md.
-//! State: y [m], y' [m/s], z [N] and the previous input [N]; initial state: at rest, all zero.
+//! steps, or, when `tolerance` > 0, adaptively by Boost.Odeint's Dormand-Prince 5(4) with that
+//! absolute and relative error tolerance per step (double only; the fitter uses RK4, which
+//! automatic differentiation passes through); the input between two samples is the straight line
+//! between them (`linear`, default) or held at the new value (`hold`). The benchmark's data were
+//! made from a band-limited input, so to reproduce them drive the model with the input upsampled by
+//! a band-limited interpolator (signals/band_limited.hpp) and a sample time Ts / factor; see
+//! docs/results.md. State: y [m], y' [m/s], z [N] and the previous input [N]; initial state: at
+//! rest, all zero.
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
+#include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -46,7 +51,8 @@ struct BoucWenOscillatorCoefficients {
 template <class T, class U>
 inline void bouc_wen_oscillator_advance(const BoucWenOscillatorCoefficients<T>& p,
                                         std::array<T, 3>& x, const U& u0, const U& u1, double dt,
-                                        std::size_t substeps, bool linear_input, bool nu_is_one) {
+                                        std::size_t substeps, bool linear_input, bool nu_is_one,
+                                        double tolerance = 0.0) {
   using std::abs;
   using std::pow;
   const T inverse_mass = 1.0 / p.mass;
@@ -67,6 +73,12 @@ inline void bouc_wen_oscillator_advance(const BoucWenOscillatorCoefficients<T>& 
     return std::array<T, 3>{v, (u - p.damping * v - p.stiffness * s[0] - z) * inverse_mass,
                             p.alpha * v - hysteretic};
   };
+  if constexpr (std::is_same_v<T, double>) {
+    if (tolerance > 0.0) {
+      dopri5_integrate(x, dt, tolerance, rhs);
+      return;
+    }
+  }
   rk4_integrate(x, T(dt), substeps, rhs);
 }
 
@@ -89,6 +101,7 @@ class BoucWenOscillator {
     double nu = 1.0;                   //!< [-] >= 1
     double sample_time = 1.0 / 750.0;  //!< Ts [s] > 0
     std::size_t substeps = 20;         //!< RK4 steps per sample, 1..100000
+    double tolerance = 0.0;            //!< > 0: adaptive Dormand-Prince with this error tolerance
     InputBetweenSamples input_between_samples = InputBetweenSamples::linear;
   };
   struct State {
@@ -114,7 +127,8 @@ class BoucWenOscillator {
     std::array<double, 3> x{state.displacement, state.velocity, state.hysteretic_force};
     detail::bouc_wen_oscillator_advance(
         coefficients_, x, state.previous_input, input, params_.sample_time, params_.substeps,
-        params_.input_between_samples == InputBetweenSamples::linear, nu_is_one_);
+        params_.input_between_samples == InputBetweenSamples::linear, nu_is_one_,
+        params_.tolerance);
     state = {x[0], x[1], x[2], input};
     return x[0];
   }
