@@ -84,6 +84,13 @@ void BM_BoucWenOscillator750Hz20Substeps(benchmark::State& bench) {
 }
 BENCHMARK(BM_BoucWenOscillator750Hz20Substeps);
 
+void BM_BoucWenOscillator750HzAdaptive(benchmark::State& bench) {
+  auto p = hyst::BoucWenOscillator::benchmark();
+  p.tolerance = 1e-8;
+  run(bench, hyst::BoucWenOscillator(p), multisine(kSamples));
+}
+BENCHMARK(BM_BoucWenOscillator750HzAdaptive);
+
 void BM_BoucWenOscillator7500Hz1Substep(benchmark::State& bench) {
   auto p = hyst::BoucWenOscillator::benchmark();
   p.sample_time /= 10.0;
