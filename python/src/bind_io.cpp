@@ -124,6 +124,17 @@ void bind_io(py::module_& module) {
       },
       "path"_a, "variable"_a, "A 1 x N or N x 1 real numeric variable as a float64 array.");
   io_module.def(
+      "read_mat_columns",
+      [](const std::filesystem::path& path, std::string_view variable) {
+        py::list columns;
+        for (auto& column : io::read_mat_columns(path, variable))
+          columns.append(to_array(std::move(column)));
+        return columns;
+      },
+      "path"_a, "variable"_a,
+      "The columns of a 2-d real numeric variable (e.g. one measured loop per column), as a list "
+      "of float64 arrays.");
+  io_module.def(
       "write_mat_vectors",
       [](const std::filesystem::path& path, const py::object& variables, std::string_view version) {
         io::write_mat_vectors(path, mat_variables(variables), io::mat_version_from_string(version));

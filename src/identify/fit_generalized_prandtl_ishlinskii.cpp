@@ -10,6 +10,7 @@
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
+#include "detail/multistart_fit.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
@@ -124,20 +125,6 @@ class CostFunctor {
   double penalty_weight_;
   std::size_t samples_ = 0;
 };
-
-Termination termination_of(const ceres::Solver::Summary& summary) {
-  switch (summary.termination_type) {
-    case ceres::CONVERGENCE:
-    case ceres::USER_SUCCESS:
-      return Termination::converged;
-    case ceres::NO_CONVERGENCE:
-      return Termination::max_iterations;
-    case ceres::FAILURE:
-    case ceres::USER_FAILURE:
-      return Termination::failed;
-  }
-  return Termination::failed;
-}
 
 // One Levenberg-Marquardt run from theta (advanced in place).
 ceres::Solver::Summary solve(const CostFunctor& functor, GpiParameterVector& theta,
@@ -432,7 +419,7 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
   FitReport& report = result.report;
   report.model = "gpi";
   report.method = "levenberg-marquardt (ceres, autodiff)";
-  report.termination = termination_of(best_summary);
+  report.termination = detail::termination_of_ceres(best_summary);
   report.message = fmt::format(
       "{} record(s), {} starting points, best: start {} ({} screening + {} refining iterations); "
       "ordering repair {:.3g}; ceres: {}",

@@ -228,7 +228,16 @@ std::vector<std::string> list_mat_variables(const fs::path& path) {
   return variable_names(mat.get());
 }
 
-std::vector<double> read_mat_vector(const fs::path& path, std::string_view variable) {
+namespace {
+
+// The values of a real numeric variable in column-major order, with its rows and columns; a
+// matrix is accepted only when `matrix_allowed`.
+struct NumericVariable {
+  std::vector<double> values;
+  std::size_t rows = 0;
+};
+
+NumericVariable read_numeric(const fs::path& path, std::string_view variable, bool matrix_allowed) {
   const MatHandle mat = open_for_reading(path);
   const auto names = variable_names(mat.get());
   if (std::find(names.begin(), names.end(), variable) == names.end()) {
@@ -248,7 +257,7 @@ std::vector<double> read_mat_vector(const fs::path& path, std::string_view varia
   if (info->rank > 2) {
     throw Error(fmt::format("{} is a {} array, expected a vector", prefix, dimensions(*info)));
   }
-  if (info->rank == 2 && info->dims[0] > 1 && info->dims[1] > 1) {
+  if (!matrix_allowed && info->rank == 2 && info->dims[0] > 1 && info->dims[1] > 1) {
     throw Error(fmt::format("{} is a {} matrix, expected a vector", prefix, dimensions(*info)));
   }
   std::size_t count = 1;
@@ -275,7 +284,25 @@ std::vector<double> read_mat_vector(const fs::path& path, std::string_view varia
       throw Error(fmt::format("{}: {}[{}] = {} is not finite", prefix, name, k, values[k]));
     }
   }
-  return values;
+  return {std::move(values), info->rank >= 1 ? static_cast<std::size_t>(info->dims[0]) : 1};
+}
+
+}  // namespace
+
+std::vector<double> read_mat_vector(const fs::path& path, std::string_view variable) {
+  return read_numeric(path, variable, false).values;
+}
+
+std::vector<std::vector<double>> read_mat_columns(const fs::path& path, std::string_view variable) {
+  auto variable_data = read_numeric(path, variable, true);
+  std::vector<std::vector<double>> columns;
+  const std::size_t rows = variable_data.rows;
+  if (rows == 0) return columns;
+  for (std::size_t start = 0; start < variable_data.values.size(); start += rows) {
+    columns.emplace_back(variable_data.values.begin() + static_cast<std::ptrdiff_t>(start),
+                         variable_data.values.begin() + static_cast<std::ptrdiff_t>(start + rows));
+  }
+  return columns;
 }
 
 void write_mat_vectors(const fs::path& path,

@@ -16,6 +16,11 @@ ModelEntry krasnoselskii_pokrovskii_entry();
 ModelEntry maxwell_slip_entry();
 ModelEntry modified_prandtl_ishlinskii_entry();
 ModelEntry rate_dependent_prandtl_ishlinskii_entry();
+ModelEntry bouc_wen_entry();
+ModelEntry bouc_wen_oscillator_entry();
+ModelEntry duhem_entry();
+ModelEntry backlash_like_entry();
+ModelEntry jiles_atherton_entry();
 
 // The validated-by-shape parameters of a model file's "params" object (unknown fields rejected;
 // messages name the path, e.g. "hysteresis.params.rho"), for code that builds the concrete model.

@@ -20,6 +20,11 @@ const ModelRegistry& ModelRegistry::builtin() {
     r.add(detail::maxwell_slip_entry());
     r.add(detail::modified_prandtl_ishlinskii_entry());
     r.add(detail::rate_dependent_prandtl_ishlinskii_entry());
+    r.add(detail::bouc_wen_entry());
+    r.add(detail::bouc_wen_oscillator_entry());
+    r.add(detail::duhem_entry());
+    r.add(detail::backlash_like_entry());
+    r.add(detail::jiles_atherton_entry());
     return r;
   }();
   return registry;

@@ -43,6 +43,12 @@ std::vector<std::string> list_mat_variables(const std::filesystem::path& path);
 //! The variable `variable` as a vector of doubles (see the file comment for what is accepted).
 std::vector<double> read_mat_vector(const std::filesystem::path& path, std::string_view variable);
 
+//! The columns of a 2-d real numeric variable (a vector gives one column for N x 1, N columns of
+//! one sample for 1 x N), e.g. one measured loop per column; the same checks as read_mat_vector()
+//! except that a matrix is accepted.
+std::vector<std::vector<double>> read_mat_columns(const std::filesystem::path& path,
+                                                  std::string_view variable);
+
 //! Writes the named vectors as N x 1 double variables, replacing the file atomically. Throws
 //! hyst::Error unless there is at least one variable, every name is a valid MATLAB name (a letter,
 //! then letters, digits or '_', at most 63 characters) and unique, and every value is finite; or

@@ -1,0 +1,214 @@
+#pragma once
+//! \file
+//! The Jiles-Atherton model of ferromagnetic hysteresis: field H [A/m] in, flux density
+//! B = mu0 (H + M) [T] out (magnetisation M [A/m] and the tangent dB/dH available).
+//! Sources: Jiles & Atherton (1986), J. Magn. Magn. Mater. 61:48-60; Jiles, Thoelke & Devine
+//! (1992), IEEE Trans. Magn. 28:27-35; corrections reviewed by Zirka et al. (2012), J. Appl. Phys.
+//! 112:043916; reference other_models.md section 5.
+//!
+//! Common to both variants: effective field H_e = H + alpha M, anhysteretic curve
+//! M_an = M_s L(H_e / a) with the Langevin function L(x) = coth x - 1/x (series
+//! x/3 - x^3/45 + 2 x^5/945 for |x| < 1e-3), direction delta = sign(dH), and the switch delta_M
+//! (1 when delta (M_an - M_x) > 0, else 0) that stops the susceptibility from going negative right
+//! after a reversal.
+//!
+//! Variant `original` (Jiles & Atherton 1986; the form of the reference): state M_irr,
+//!     M = c M_an + (1 - c) M_irr
+//!     dM_irr/dH = delta_M (M_an - M_irr) / (delta k - alpha (M_an - M_irr))
+//! (M is solved from M = c M_an(H + alpha M) + (1 - c) M_irr by Newton's method).
+//!
+//! Variant `venkataraman` (R. Venkataraman, PhD thesis, University of Maryland 1999, eq. (30); the
+//! form used by COMSOL and Altair Flux): state M,
+//!     N     = c delta k dM_an/dH_e + delta_M (M_an - M)
+//!     dM/dH = N / (delta k - alpha N)
+//!
+//! Corrections against blow-up at high drive (both variants): the denominator is kept on the
+//! side of delta with magnitude >= 1e-3 k, and the differential susceptibility dM/dH is clipped
+//! to >= 0. Parameters: M_s [A/m] > 0, a [A/m] > 0, k [A/m] > 0, c in [0, 1), alpha >= 0 with
+//! alpha M_s / (3 a) < 1 (a single-valued anhysteretic curve).
+//!
+//! Integration: rate independent, integrated in H by classical RK4 with sub-steps of at most
+//! `max_field_step` (default k / 50, the reference's advice); any H(t), minor loops included.
+//! Initial state: demagnetised (H = 0, M = 0, M_irr = 0) or state_at(H, M). Known limitation of
+//! the model: minor loops do not close exactly.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <string_view>
+
+#include "hyst/core/runge_kutta.hpp"
+
+namespace hyst {
+
+inline constexpr double kMu0 = 4e-7 * std::numbers::pi;  //!< vacuum permeability [H/m]
+
+enum class JilesAthertonVariant { original, venkataraman };
+
+namespace detail {
+
+template <class T>
+inline T langevin(const T& x) {
+  using std::abs;
+  using std::tanh;
+  if (abs(x) < 1e-3) {
+    const T x2 = x * x;
+    return x * (1.0 / 3.0 - x2 * (1.0 / 45.0 - x2 * (2.0 / 945.0)));
+  }
+  if (abs(x) > 40.0) return (x > 0.0 ? 1.0 : -1.0) - 1.0 / x;  // coth x = +-1 to 1e-34
+  return 1.0 / tanh(x) - 1.0 / x;
+}
+
+template <class T>
+inline T langevin_derivative(const T& x) {
+  using std::abs;
+  using std::sinh;
+  if (abs(x) < 1e-2) {
+    const T x2 = x * x;
+    return 1.0 / 3.0 - x2 * (1.0 / 15.0 - x2 * (2.0 / 189.0));
+  }
+  if (abs(x) > 40.0) return 1.0 / (x * x);  // 1/sinh^2 < 1e-34; sinh overflows beyond 710
+  const T s = sinh(x);
+  return 1.0 / (x * x) - 1.0 / (s * s);
+}
+
+template <class T>
+struct JilesAthertonCoefficients {
+  T ms, a, k, c, alpha;
+};
+
+//! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k.
+template <class T>
+inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
+  T d = delta * k - alpha * x;
+  if (delta * d < 1e-3 * k) d = delta * 1e-3 * k;
+  return d;
+}
+
+//! Total M for the original variant: the root of M - c M_an(H + alpha M) - (1 - c) M_irr, by
+//! Newton's method from `m` (the slope 1 - c alpha dM_an/dH_e >= 1 - alpha M_s / (3 a) > 0).
+template <class T>
+inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, double h, const T& m_irr,
+                                T m) {
+  for (int i = 0; i < 4; ++i) {
+    const T xe = (h + p.alpha * m) / p.a;
+    const T residual = m - p.c * p.ms * langevin(xe) - (1.0 - p.c) * m_irr;
+    const T slope = 1.0 - p.c * p.alpha * p.ms / p.a * langevin_derivative(xe);
+    m -= residual / slope;
+  }
+  return m;
+}
+
+//! Advances (M, M_irr) from field h0 by dh with `steps` RK4 steps.
+template <class T>
+inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
+                       double h0, double dh, std::size_t steps, T& m, T& m_irr) {
+  const double delta = dh > 0.0 ? 1.0 : -1.0;
+  if (variant == JilesAthertonVariant::original) {
+    const T m_guess = m;
+    auto rhs = [&](const std::array<T, 1>& s, double tau) {
+      const double h = h0 + tau * dh;
+      const T mt = ja_total_magnetisation(p, h, s[0], m_guess);
+      const T diff = p.ms * langevin((h + p.alpha * mt) / p.a) - s[0];
+      if (!(delta * diff > 0.0)) return std::array<T, 1>{T(0.0)};
+      return std::array<T, 1>{diff / ja_denominator(p.k, p.alpha, diff, delta)};
+    };
+    std::array<T, 1> x{m_irr};
+    rk4_integrate(x, T(dh), steps, rhs);
+    m_irr = x[0];
+    m = ja_total_magnetisation(p, h0 + dh, m_irr, m_guess);
+  } else {
+    auto rhs = [&](const std::array<T, 1>& s, double tau) {
+      const double h = h0 + tau * dh;
+      const T xe = (h + p.alpha * s[0]) / p.a;
+      const T diff = p.ms * langevin(xe) - s[0];
+      const T chi_an = p.ms / p.a * langevin_derivative(xe);
+      T n = p.c * delta * p.k * chi_an;
+      if (delta * diff > 0.0) n += diff;
+      T slope = n / ja_denominator(p.k, p.alpha, n, delta);
+      if (slope < 0.0) slope = T(0.0);
+      return std::array<T, 1>{slope};
+    };
+    std::array<T, 1> x{m};
+    rk4_integrate(x, T(dh), steps, rhs);
+    m = x[0];
+    m_irr = m;
+  }
+}
+
+inline std::size_t field_substeps(double dh, double max_step) {
+  const double needed = std::ceil(std::abs(dh) / max_step);
+  if (needed < 1.0) return 1;
+  return needed > 1e5 ? std::size_t{100000} : static_cast<std::size_t>(needed);
+}
+
+}  // namespace detail
+
+class JilesAtherton {
+ public:
+  struct Params {
+    double ms = 1.6e6;      //!< saturation magnetisation M_s [A/m] > 0
+    double a = 1100.0;      //!< anhysteretic shape parameter [A/m] > 0
+    double k = 400.0;       //!< pinning [A/m] > 0
+    double c = 0.2;         //!< reversibility [-] in [0, 1)
+    double alpha = 1.6e-3;  //!< inter-domain coupling [-] >= 0, alpha M_s / (3 a) < 1
+    JilesAthertonVariant variant = JilesAthertonVariant::original;
+    double max_field_step = 0.0;  //!< largest RK4 step in H [A/m]; 0 = k / 50
+  };
+  struct State {
+    double field = 0.0;          //!< H of the previous sample [A/m]
+    double magnetisation = 0.0;  //!< M [A/m]
+    double irreversible = 0.0;   //!< M_irr [A/m] (= M for the Venkataraman variant)
+    double direction = 1.0;      //!< sign of the last field change (+1 or -1)
+  };
+
+  //! Throws hyst::Error naming the parameter and the rule (file comment).
+  explicit JilesAtherton(Params params);
+
+  const Params& params() const { return params_; }
+  //! Demagnetised: H = 0, M = M_irr = 0.
+  State initial_state() const { return {}; }
+  //! At field H with magnetisation M; throws hyst::Error unless both are finite and |M| < M_s.
+  State state_at(double field, double magnetisation) const;
+
+  //! M_an(H_e) = M_s L(H_e / a) [A/m].
+  double anhysteretic(double effective_field) const {
+    return params_.ms * detail::langevin(effective_field / params_.a);
+  }
+  double flux_density(const State& state) const {
+    return kMu0 * (state.field + state.magnetisation);
+  }
+  //! dM/dH [-] at the state, for a field change in direction `direction` (+1 / -1).
+  double susceptibility(const State& state, double direction) const;
+  //! Tangent dB/dH = mu0 (1 + dM/dH) [H/m] for finite-element and circuit solvers.
+  double tangent(const State& state, double direction) const {
+    return kMu0 * (1.0 + susceptibility(state, direction));
+  }
+  double tangent(const State& state) const { return tangent(state, state.direction); }
+
+  //! Advances to field H [A/m] (linear between samples) and returns B [T]. No allocation.
+  double step(State& state, double field) const noexcept {
+    const double dh = field - state.field;
+    if (dh != 0.0) {
+      detail::ja_advance(coefficients_, params_.variant, state.field, dh,
+                         detail::field_substeps(dh, max_step_), state.magnetisation,
+                         state.irreversible);
+      state.field = field;
+      state.direction = dh > 0.0 ? 1.0 : -1.0;
+    }
+    return flux_density(state);
+  }
+
+ private:
+  Params params_;
+  detail::JilesAthertonCoefficients<double> coefficients_;
+  double max_step_;
+};
+
+//! "original" or "venkataraman".
+std::string_view to_string(JilesAthertonVariant variant);
+//! The inverse of to_string(); throws hyst::Error for other text.
+JilesAthertonVariant jiles_atherton_variant_from_string(std::string_view text);
+
+}  // namespace hyst

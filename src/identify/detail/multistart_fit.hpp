@@ -1,0 +1,217 @@
+#pragma once
+// Bounded nonlinear least squares from several starting points, with Ceres (Levenberg-Marquardt,
+// automatic derivatives), shared by the fitters of the differential hysteresis models.
+//
+// The functor computes the residuals of a fixed-size parameter vector q (the fitters scale their
+// physical parameters so that q is of order 1) for any scalar type T:
+//   template <class T> bool operator()(const T* q, T* residuals) const;
+//   std::size_t residuals() const;
+// Every start runs `screening_iterations`; the best one continues up to `max_iterations`.
+// Parameters listed in `fixed` are held at their start value.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+#include "hyst/identify/fit_report.hpp"
+
+namespace hyst::detail {
+
+template <std::size_t N>
+struct MultistartOptions {
+  std::array<double, N> lower{};
+  std::array<double, N> upper{};
+  std::vector<int> fixed;  // indices held at their start value
+  std::size_t screening_iterations = 10;
+  std::size_t max_iterations = 100;
+  double function_tolerance = 1e-12;
+};
+
+template <std::size_t N>
+struct MultistartResult {
+  std::array<double, N> q{};
+  Termination termination = Termination::failed;
+  std::string message;
+  std::size_t iterations = 0;
+  std::size_t best_start = 0;
+  double initial_cost = 0.0;  // cost of the best start before it was iterated
+  double final_cost = 0.0;
+  std::array<bool, N> at_bound{};
+};
+
+inline Termination termination_of_ceres(const ceres::Solver::Summary& summary) {
+  switch (summary.termination_type) {
+    case ceres::CONVERGENCE:
+    case ceres::USER_SUCCESS:
+      return Termination::converged;
+    case ceres::NO_CONVERGENCE:
+      return Termination::max_iterations;
+    case ceres::FAILURE:
+    case ceres::USER_FAILURE:
+      return Termination::failed;
+  }
+  return Termination::failed;
+}
+
+inline bool all_finite(double x) {
+  return std::isfinite(x);
+}
+template <class T, int M>
+bool all_finite(const ceres::Jet<T, M>& x) {
+  return std::isfinite(x.a) && x.v.allFinite();
+}
+
+// The functor with a check that every residual and derivative is finite: a step that overflows
+// is reported to Ceres as infeasible (it then shortens the step) instead of as NaN.
+template <class Functor>
+struct FiniteResiduals {
+  Functor functor;
+  template <class T>
+  bool operator()(const T* q, T* residuals) const {
+    if (!functor(q, residuals)) return false;
+    for (std::size_t r = 0; r < functor.residuals(); ++r) {
+      if (!all_finite(residuals[r])) return false;
+    }
+    return true;
+  }
+};
+
+template <std::size_t N, class Functor>
+double least_squares_cost(const Functor& functor, const std::array<double, N>& q) {
+  std::vector<double> residuals(functor.residuals());
+  if (!functor(q.data(), residuals.data())) return std::numeric_limits<double>::infinity();
+  double cost = 0.0;
+  for (double r : residuals)
+    cost += 0.5 * r * r;
+  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+}
+
+template <std::size_t N, class Functor>
+ceres::Solver::Summary solve_bounded(const Functor& functor, std::array<double, N>& q,
+                                     const MultistartOptions<N>& options, std::size_t iterations) {
+  ceres::Problem problem;
+  auto* cost = new ceres::AutoDiffCostFunction<FiniteResiduals<Functor>, ceres::DYNAMIC,
+                                               static_cast<int>(N)>(
+      new FiniteResiduals<Functor>{functor}, static_cast<int>(functor.residuals()));
+  problem.AddResidualBlock(cost, nullptr, q.data());
+  for (std::size_t i = 0; i < N; ++i) {
+    problem.SetParameterLowerBound(q.data(), static_cast<int>(i), options.lower[i]);
+    problem.SetParameterUpperBound(q.data(), static_cast<int>(i), options.upper[i]);
+  }
+  if (!options.fixed.empty()) {
+    problem.SetManifold(q.data(), new ceres::SubsetManifold(static_cast<int>(N), options.fixed));
+  }
+  ceres::Solver::Options solver;
+  solver.minimizer_type = ceres::TRUST_REGION;
+  solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = static_cast<int>(iterations);
+  solver.function_tolerance = options.function_tolerance;
+  solver.gradient_tolerance = 1e-14;
+  solver.parameter_tolerance = 1e-12;
+  solver.logging_type = ceres::SILENT;
+  solver.minimizer_progress_to_stdout = false;
+  solver.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  return summary;
+}
+
+// Throws hyst::Error when a start is outside its bounds or no start gives a usable solution.
+template <std::size_t N, class Functor>
+MultistartResult<N> multistart_fit(const Functor& functor,
+                                   const std::vector<std::array<double, N>>& starts,
+                                   const MultistartOptions<N>& options, std::string_view what) {
+  if (starts.empty()) throw Error(fmt::format("{} fit: no starting point", what), "starts");
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!(options.lower[i] < options.upper[i])) {
+        throw Error(fmt::format("{} fit: bound of parameter {}: lower {} must be < upper {}", what,
+                                i, options.lower[i], options.upper[i]),
+                    "bounds");
+      }
+      if (!(starts[s][i] >= options.lower[i] && starts[s][i] <= options.upper[i])) {
+        throw Error(fmt::format("{} fit: start {} parameter {} = {} is outside [{}, {}]", what, s,
+                                i, starts[s][i], options.lower[i], options.upper[i]),
+                    "starts");
+      }
+    }
+  }
+  MultistartResult<N> result;
+  double best_cost = std::numeric_limits<double>::infinity();
+  ceres::Solver::Summary best_summary;
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    std::array<double, N> q = starts[s];
+    const double start_cost = least_squares_cost(functor, q);
+    if (!std::isfinite(start_cost)) continue;
+    const auto summary = solve_bounded(functor, q, options, options.screening_iterations);
+    result.iterations +=
+        static_cast<std::size_t>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
+      best_cost = summary.final_cost;
+      result.best_start = s;
+      result.initial_cost = start_cost;
+      result.q = q;
+      best_summary = summary;
+    }
+  }
+  if (!std::isfinite(best_cost)) {
+    throw Error(fmt::format("{} fit: Ceres found no usable solution from any of the {} starts",
+                            what, starts.size()));
+  }
+  if (options.max_iterations > 0 && best_summary.termination_type == ceres::NO_CONVERGENCE) {
+    best_summary = solve_bounded(functor, result.q, options, options.max_iterations);
+    result.iterations += static_cast<std::size_t>(best_summary.num_successful_steps +
+                                                  best_summary.num_unsuccessful_steps);
+  }
+  result.termination = termination_of_ceres(best_summary);
+  result.message = best_summary.message;
+  result.final_cost = best_summary.final_cost;
+  for (std::size_t i = 0; i < N; ++i) {
+    const double width = options.upper[i] - options.lower[i];
+    result.at_bound[i] = result.q[i] - options.lower[i] <= 1e-6 * width ||
+                         options.upper[i] - result.q[i] <= 1e-6 * width;
+  }
+  return result;
+}
+
+// Starting points divided by the parameter scale (the fitters iterate q = physical / scale).
+template <std::size_t N>
+std::vector<std::array<double, N>> scaled_starts(const std::vector<std::array<double, N>>& physical,
+                                                 const std::array<double, N>& scale) {
+  std::vector<std::array<double, N>> starts;
+  for (const auto& start : physical) {
+    std::array<double, N> q{};
+    for (std::size_t i = 0; i < N; ++i)
+      q[i] = start[i] / scale[i];
+    starts.push_back(q);
+  }
+  return starts;
+}
+
+// The common part of a FitReport: how Ceres ended and the costs, the residuals having been divided
+// by `residual_scale` (output units).
+template <std::size_t N>
+FitReport report_of(const MultistartResult<N>& result, double residual_scale,
+                    std::size_t parameters, std::string model, std::string method) {
+  FitReport report;
+  report.model = std::move(model);
+  report.method = std::move(method);
+  report.termination = result.termination;
+  report.message = result.message;
+  report.iterations = result.iterations;
+  report.initial_cost = result.initial_cost * residual_scale * residual_scale;
+  report.final_cost = result.final_cost * residual_scale * residual_scale;
+  report.parameters = parameters;
+  return report;
+}
+
+}  // namespace hyst::detail

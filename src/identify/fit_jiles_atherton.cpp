@@ -1,0 +1,256 @@
+#include "hyst/identify/fit_jiles_atherton.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "detail/multistart_fit.hpp"
+#include "hyst/core/checks.hpp"
+#include "hyst/core/error.hpp"
+
+namespace hyst {
+namespace {
+
+constexpr std::size_t kParameters = 5;  // M_s, a, k, c, alpha
+using Vector = std::array<double, kParameters>;
+
+double value_of(double x) {
+  return x;
+}
+template <class T, int N>
+double value_of(const ceres::Jet<T, N>& x) {
+  return x.a;
+}
+
+Vector physical_of(const JilesAtherton::Params& p) {
+  return {p.ms, p.a, p.k, p.c, p.alpha};
+}
+
+// Steady-state loop in any scalar type; writes one B per sample when `out` is not null.
+template <class T>
+void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
+              std::span<const double> field, double max_step, bool periodic, T* out) {
+  T m(0.0);
+  T m_irr(0.0);
+  double h = 0.0;
+  auto advance = [&](double target) {
+    const double dh = target - h;
+    if (dh != 0.0) {
+      detail::ja_advance(p, variant, h, dh, detail::field_substeps(dh, max_step), m, m_irr);
+      h = target;
+    }
+  };
+  if (periodic) {
+    advance(field.front());
+    for (double value : field)
+      advance(value);
+  }
+  for (std::size_t k = 0; k < field.size(); ++k) {
+    advance(field[k]);
+    out[k] = kMu0 * (field[k] + m);
+  }
+}
+
+class LoopError {
+ public:
+  LoopError(std::span<const BhLoop> loops, Vector scale, JilesAthertonVariant variant,
+            double max_step, double b_scale, bool periodic)
+      : loops_(loops.begin(), loops.end()),
+        scale_(scale),
+        variant_(variant),
+        max_step_(max_step),
+        b_scale_(b_scale),
+        periodic_(periodic) {
+    for (const auto& loop : loops_)
+      residuals_ += loop.field.size();
+  }
+  std::size_t residuals() const { return residuals_; }
+
+  template <class T>
+  bool operator()(const T* q, T* residuals) const {
+    const detail::JilesAthertonCoefficients<T> p{
+        q[0] * scale_[0], q[1] * scale_[1], q[2] * scale_[2], q[3] * scale_[3], q[4] * scale_[4]};
+    if (!(p.ms > 0.0 && p.a > 0.0 && p.k > 0.0)) return false;
+    if (!(p.alpha * p.ms / (3.0 * p.a) < 0.99)) return false;
+    // dM/dH ~ 1/k: the RK4 step must stay well below k, or the integration turns unstable.
+    const double max_step = std::min(max_step_, value_of(p.k) / 20.0);
+    std::size_t r = 0;
+    for (const auto& loop : loops_) {
+      run_loop(p, variant_, loop.field, max_step, periodic_, residuals + r);
+      for (std::size_t k = 0; k < loop.field.size(); ++k, ++r) {
+        residuals[r] = (residuals[r] - loop.flux_density[k]) / b_scale_;
+        if (!std::isfinite(value_of(residuals[r]))) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  std::vector<BhLoop> loops_;
+  Vector scale_;
+  JilesAthertonVariant variant_;
+  double max_step_;
+  double b_scale_;
+  bool periodic_;
+  std::size_t residuals_ = 0;
+};
+
+void check_loop(const BhLoop& loop, std::string_view what, std::size_t index) {
+  const std::string name = fmt::format("{}[{}]", what, index);
+  require_same_size(loop.field.size(), name + ".field", loop.flux_density.size(),
+                    name + ".flux_density");
+  if (loop.field.size() < 8) {
+    throw Error(fmt::format("{} has {} samples, at least 8 needed", name, loop.field.size()));
+  }
+  require_finite(loop.field, name + ".field");
+  require_finite(loop.flux_density, name + ".flux_density");
+  const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
+  if (!(*hi > *lo)) throw Error(fmt::format("{}: the field is constant", name), "field");
+}
+
+std::vector<double> concatenate_measured(std::span<const BhLoop> loops) {
+  std::vector<double> all;
+  for (const auto& loop : loops)
+    all.insert(all.end(), loop.flux_density.begin(), loop.flux_density.end());
+  return all;
+}
+
+std::vector<double> concatenate_simulated(const JilesAtherton& model, std::span<const BhLoop> loops,
+                                          bool periodic) {
+  std::vector<double> all;
+  for (const auto& loop : loops) {
+    const auto b = simulate_bh_loop(model, loop.field, periodic);
+    all.insert(all.end(), b.begin(), b.end());
+  }
+  return all;
+}
+
+}  // namespace
+
+std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const double> field,
+                                     bool periodic) {
+  require_not_empty(field.size(), "field");
+  require_finite(field, "field");
+  const auto& p = model.params();
+  const detail::JilesAthertonCoefficients<double> c{p.ms, p.a, p.k, p.c, p.alpha};
+  std::vector<double> b(field.size());
+  run_loop(c, p.variant, field, p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0, periodic,
+           b.data());
+  return b;
+}
+
+std::vector<JilesAtherton::Params> jiles_atherton_starts(const BhLoop& loop,
+                                                         JilesAthertonVariant variant) {
+  check_loop(loop, "loops", 0);
+  double m_max = 0.0;
+  for (std::size_t k = 0; k < loop.field.size(); ++k)
+    m_max = std::max(m_max, std::abs(loop.flux_density[k] / kMu0 - loop.field[k]));
+  // Coercive field: |H| where B changes sign (mean over the crossings), linearly interpolated.
+  double coercive = 0.0;
+  int crossings = 0;
+  const std::size_t n = loop.field.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double b0 = loop.flux_density[k];
+    const double b1 = loop.flux_density[(k + 1) % n];
+    if ((b0 < 0.0) != (b1 < 0.0) && b1 != b0) {
+      const double h0 = loop.field[k];
+      const double h1 = loop.field[(k + 1) % n];
+      coercive += std::abs(h0 + (h1 - h0) * (-b0) / (b1 - b0));
+      ++crossings;
+    }
+  }
+  const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
+  coercive = crossings > 0 ? coercive / crossings : 0.0;
+  if (!(coercive > 0.0)) coercive = 0.05 * (*hi - *lo);
+  if (!(m_max > 0.0)) throw Error("Jiles-Atherton fit: the loop has no magnetisation");
+  std::vector<JilesAtherton::Params> starts;
+  for (double a_factor : {1.0, 3.0}) {
+    for (double c : {0.2, 0.8}) {
+      for (double coupling : {0.0, 1.0}) {
+        JilesAtherton::Params p;
+        p.ms = 1.1 * m_max;
+        p.a = a_factor * coercive;
+        p.k = coercive;
+        p.c = c;
+        p.alpha = coupling * p.a / p.ms;
+        p.variant = variant;
+        starts.push_back(p);
+      }
+    }
+  }
+  return starts;
+}
+
+JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
+                                    std::span<const BhLoop> validation,
+                                    const JilesAthertonFitOptions& options) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  if (loops.empty()) throw Error("Jiles-Atherton fit: no loop", "loops");
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    check_loop(loops[i], "loops", i);
+  for (std::size_t i = 0; i < validation.size(); ++i)
+    check_loop(validation[i], "validation", i);
+  double span = 0.0;
+  double b_sum = 0.0;
+  std::size_t count = 0;
+  for (const auto& loop : loops) {
+    const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
+    span = std::max(span, *hi - *lo);
+    for (double b : loop.flux_density) {
+      b_sum += b * b;
+      ++count;
+    }
+  }
+  const double b_scale = std::sqrt(b_sum / static_cast<double>(count));
+  if (!(b_scale > 0.0)) throw Error("Jiles-Atherton fit: B is zero", "flux_density");
+  const double max_step = options.max_field_step > 0.0 ? options.max_field_step : span / 2000.0;
+
+  auto starts = options.starts;
+  if (starts.empty()) starts = jiles_atherton_starts(loops.front(), options.variant);
+  for (auto& start : starts) {
+    start.variant = options.variant;
+    JilesAtherton{start};  // validates
+  }
+  const Vector first = physical_of(starts.front());
+  Vector scale{first[0], first[1], first[2], 1.0, first[4] > 0.0 ? first[4] : first[1] / first[0]};
+  detail::MultistartOptions<kParameters> ms;
+  ms.lower = {0.1, 1e-3, 0.05, 0.0, 0.0};
+  ms.upper = {10.0, 1e3, 1e3, 0.99, 1e3};
+  ms.screening_iterations = options.screening_iterations;
+  ms.max_iterations = options.max_iterations;
+  ms.function_tolerance = options.function_tolerance;
+  std::vector<Vector> physical_starts;
+  for (const auto& start : starts)
+    physical_starts.push_back(physical_of(start));
+  const auto q_starts = detail::scaled_starts(physical_starts, scale);
+  const LoopError functor(loops, scale, options.variant, max_step, b_scale, options.periodic);
+  const auto result = detail::multistart_fit(functor, q_starts, ms, "Jiles-Atherton");
+
+  JilesAtherton::Params fitted;
+  fitted.ms = result.q[0] * scale[0];
+  fitted.a = result.q[1] * scale[1];
+  fitted.k = result.q[2] * scale[2];
+  fitted.c = result.q[3] * scale[3];
+  fitted.alpha = result.q[4] * scale[4];
+  fitted.variant = options.variant;
+  fitted.max_field_step = std::min(max_step, fitted.k / 20.0);
+  JilesAtherton model(fitted);
+
+  FitReport report =
+      detail::report_of(result, b_scale, kParameters, "jiles_atherton",
+                        "levenberg-marquardt (ceres, autodiff through RK4), steady-state loops");
+  report.fit = error_metrics(concatenate_measured(loops),
+                             concatenate_simulated(model, loops, options.periodic));
+  if (!validation.empty()) {
+    report.validation = error_metrics(concatenate_measured(validation),
+                                      concatenate_simulated(model, validation, options.periodic));
+  }
+  report.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return {model, report, starts.size(), result.best_start};
+}
+
+}  // namespace hyst

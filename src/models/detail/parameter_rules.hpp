@@ -1,0 +1,47 @@
+#pragma once
+// Validation of scalar model parameters with messages that name the model, the parameter (its
+// symbol and its field) and the rule, e.g. "Bouc-Wen oscillator mass m = 0 must be > 0".
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+
+namespace hyst::detail {
+
+struct ParameterRules {
+  std::string_view model;  // e.g. "Bouc-Wen oscillator"
+
+  [[noreturn]] void fail(std::string_view label, std::string_view field, double value,
+                         std::string_view rule) const {
+    throw Error(fmt::format("{} {} = {} {}", model, label, value, rule), std::string(field));
+  }
+  void finite(double value, std::string_view label, std::string_view field) const {
+    if (!std::isfinite(value)) fail(label, field, value, "is not finite");
+  }
+  void greater(double value, double bound, std::string_view label, std::string_view field) const {
+    finite(value, label, field);
+    if (!(value > bound)) fail(label, field, value, fmt::format("must be > {}", bound));
+  }
+  void at_least(double value, double bound, std::string_view label, std::string_view field) const {
+    finite(value, label, field);
+    if (!(value >= bound)) fail(label, field, value, fmt::format("must be >= {}", bound));
+  }
+  void below(double value, double bound, std::string_view label, std::string_view field) const {
+    finite(value, label, field);
+    if (!(value < bound)) fail(label, field, value, fmt::format("must be < {}", bound));
+  }
+  void count_in(std::size_t value, std::size_t low, std::size_t high, std::string_view label,
+                std::string_view field) const {
+    if (value < low || value > high) {
+      throw Error(fmt::format("{} {} = {} must be in [{}, {}]", model, label, value, low, high),
+                  std::string(field));
+    }
+  }
+};
+
+}  // namespace hyst::detail

@@ -1,0 +1,92 @@
+// Registry entry of the backlash-like model (Su et al. 2000): model-file form, numerical inverse,
+// fitter.
+
+#include <fmt/format.h>
+
+#include "hyst/identify/fit_duhem.hpp"
+#include "hyst/models/backlash_like.hpp"
+#include "model_entries.hpp"
+#include "monotone_inverse_codec.hpp"
+
+namespace hyst::detail {
+namespace {
+
+struct BacklashLikeCodec {
+  using Model = BacklashLike;
+  static constexpr std::string_view name = "backlash_like";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    return {{"a", p.a}, {"c", p.c}, {"b1", p.b1}};
+  }
+  static Model::Params params_from_json(JsonFields& fields) {
+    Model::Params p;
+    p.a = fields.number("a");
+    p.c = fields.number("c");
+    p.b1 = fields.number("b1");
+    return p;
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return {{"input", state.input}, {"output", state.output}};
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    const double input = fields.number("input");
+    const double output = fields.number("output");
+    return model.state_at(input, output);
+  }
+  static std::size_t parameter_count(const Model&) { return 3; }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    return fmt::format(
+        "backlash-like model (Su et al. 2000): a = {}, c = {}, B1 = {}; {}monotone "
+        "(B1 >= c/2); exact steps for input linear between samples\n",
+        p.a, p.c, p.b1, model.is_monotone() ? "" : "not ");
+  }
+  static bool has_inverse(const Model& model) { return model.is_monotone(); }
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
+                                                      const InverseLimits& limits) {
+    return make_monotone_inverse<BacklashLikeCodec>(model, state, limits, state.input);
+  }
+};
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  auto params = BacklashLikeCodec::params_from_json(fields);
+  fields.finish();
+  return make_dynamic_model<BacklashLikeCodec>(params, state_json);
+}
+
+FitOutcome fit(const FitRequest& request) {
+  require_no_validation_record(request, "backlash-like");
+  JsonFields fields(request.options, "fit options");
+  DuhemFitOptions options;
+  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
+  fields.finish();
+  options.validate_fraction = request.validate_fraction;
+  auto result = fit_backlash_like(request.input, request.output, options);
+  return {std::make_unique<ModelAdapter<BacklashLikeCodec>>(result.model, result.initial_state),
+          std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry backlash_like_entry() {
+  ModelEntry entry;
+  entry.name = std::string(BacklashLikeCodec::name);
+  entry.description = "backlash-like (Su et al. 2000): w' = a|v'|(c v - w) + B1 v'; exact steps";
+  entry.parameters = {
+      {"a", "number", "1 / input units", "rate of approach to the branches, > 0"},
+      {"c", "number", "output / input units", "slope of the branches, > 0"},
+      {"b1", "number", "output / input units", "B1 < c; monotone (invertible) iff B1 >= c/2"},
+  };
+  entry.fit_options = {
+      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  entry.example_params = {{"a", 1.0}, {"c", 1.0}, {"b1", 0.6}};
+  return entry;
+}
+
+}  // namespace hyst::detail

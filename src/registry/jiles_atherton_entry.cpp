@@ -1,0 +1,137 @@
+// Registry entry of the Jiles-Atherton model: model-file form, numerical inverse (H from B),
+// fitter.
+
+#include <fmt/format.h>
+
+#include "hyst/identify/fit_jiles_atherton.hpp"
+#include "hyst/models/jiles_atherton.hpp"
+#include "model_entries.hpp"
+#include "monotone_inverse_codec.hpp"
+
+namespace hyst::detail {
+namespace {
+
+struct JilesAthertonCodec {
+  using Model = JilesAtherton;
+  static constexpr std::string_view name = "jiles_atherton";
+
+  static nlohmann::json params_to_json(const Model& model) {
+    const auto& p = model.params();
+    return {{"ms", p.ms},
+            {"a", p.a},
+            {"k", p.k},
+            {"c", p.c},
+            {"alpha", p.alpha},
+            {"variant", std::string(to_string(p.variant))},
+            {"max_field_step", p.max_field_step}};
+  }
+  static Model::Params params_from_json(JsonFields& fields) {
+    Model::Params p;
+    p.ms = fields.number("ms");
+    p.a = fields.number("a");
+    p.k = fields.number("k");
+    p.c = fields.number("c");
+    p.alpha = fields.number("alpha");
+    if (fields.has("variant")) {
+      p.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
+    }
+    p.max_field_step = fields.number_or("max_field_step", p.max_field_step);
+    return p;
+  }
+  static nlohmann::json state_to_json(const Model&, const Model::State& state) {
+    return {{"field", state.field}, {"magnetisation", state.magnetisation}};
+  }
+  static Model::State state_from_json(const Model& model, JsonFields& fields) {
+    const double field = fields.number("field");
+    const double magnetisation = fields.number("magnetisation");
+    return model.state_at(field, magnetisation);
+  }
+  static std::size_t parameter_count(const Model&) { return 5; }
+  static std::string describe(const Model& model) {
+    const auto& p = model.params();
+    return fmt::format(
+        "Jiles-Atherton model ({} variant): M_s = {} A/m, a = {} A/m, k = {} A/m, c = {}, "
+        "alpha = {}\n  input H [A/m], output B [T]; RK4 in H with steps <= {} A/m\n",
+        to_string(p.variant), p.ms, p.a, p.k, p.c, p.alpha,
+        p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0);
+  }
+  static bool has_inverse(const Model&) { return true; }  // dB/dH >= mu0 > 0
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
+                                                      const InverseLimits& limits) {
+    return make_monotone_inverse<JilesAthertonCodec>(model, state, limits, state.field);
+  }
+};
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  auto params = JilesAthertonCodec::params_from_json(fields);
+  fields.finish();
+  return make_dynamic_model<JilesAthertonCodec>(params, state_json);
+}
+
+FitOutcome fit(const FitRequest& request) {
+  JsonFields fields(request.options, "fit options");
+  JilesAthertonFitOptions options;
+  if (fields.has("variant")) {
+    options.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
+  }
+  options.periodic = fields.boolean_or("periodic", false);
+  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
+  fields.finish();
+  if (!(request.validate_fraction >= 0.0 && request.validate_fraction < 1.0)) {
+    throw Error(fmt::format("validate_fraction = {} must be in [0, 1)", request.validate_fraction),
+                "validate_fraction");
+  }
+  const auto n_fit = static_cast<std::size_t>(
+      std::round(static_cast<double>(request.input.size()) * (1.0 - request.validate_fraction)));
+  const BhLoop record{request.input.first(n_fit), request.output.first(n_fit)};
+  std::vector<BhLoop> validation;
+  if (!request.validation_input.empty()) {
+    validation.push_back({request.validation_input, request.validation_output});
+  }
+  auto result = fit_jiles_atherton(std::span(&record, 1), validation, options);
+  if (n_fit < request.input.size()) {
+    // The held-out tail continues the simulation of the whole record.
+    const auto b = simulate_bh_loop(result.model, request.input, options.periodic);
+    result.report.validation =
+        error_metrics(request.output.subspan(n_fit), std::span(b).subspan(n_fit));
+  }
+  auto state = result.model.initial_state();
+  if (options.periodic) {
+    for (double h : request.input.first(n_fit))
+      result.model.step(state, h);
+  }
+  return {std::make_unique<ModelAdapter<JilesAthertonCodec>>(result.model, state),
+          std::move(result.report)};
+}
+
+}  // namespace
+
+ModelEntry jiles_atherton_entry() {
+  ModelEntry entry;
+  entry.name = std::string(JilesAthertonCodec::name);
+  entry.description =
+      "Jiles-Atherton: B(H) of ferromagnets, original or Venkataraman variant; Ceres fit";
+  entry.parameters = {
+      {"ms", "number", "A/m", "saturation magnetisation M_s > 0"},
+      {"a", "number", "A/m", "anhysteretic shape, > 0"},
+      {"k", "number", "A/m", "pinning, > 0"},
+      {"c", "number", "-", "reversibility in [0, 1)"},
+      {"alpha", "number", "-", "coupling >= 0, alpha M_s / (3 a) < 1"},
+      {"variant", "string", "", "original (default) or venkataraman (COMSOL, Altair Flux)"},
+      {"max_field_step", "number", "A/m", "largest RK4 step in H, 0 = k / 50 (0)"},
+  };
+  entry.fit_options = {
+      {"variant", "string", "", "original or venkataraman"},
+      {"periodic", "boolean", "", "the record is one loop in steady state (false: demagnetised)"},
+      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (200)"},
+  };
+  entry.create = &create;
+  entry.fit = &fit;
+  entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},
+                          {"c", 0.2},  {"alpha", 1e-6}, {"variant", "original"}};
+  return entry;
+}
+
+}  // namespace hyst::detail
