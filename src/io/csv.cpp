@@ -123,7 +123,7 @@ std::string name_problem(std::string_view name) {
   if (trim(name).size() != name.size()) return "has leading or trailing spaces";
   if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
   // Written first in a file, it would be read as the file's byte order mark and dropped.
-  if (name.starts_with(kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
+  if (name.starts_with(detail::kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
   return {};
 }
 
