@@ -1,6 +1,8 @@
 #include "hyst/actuator/hysteretic_force.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -127,13 +129,13 @@ std::optional<AnyHysteresis> parse_named(std::string_view name, const nlohmann::
 
 template <std::size_t... I>
 std::string names(std::index_sequence<I...>) {
+  const std::string_view all[] = {
+      ForceModel<std::variant_alternative_t<I, AnyHysteresis>>::name...};
   std::string list;
-  ((list.find(ForceModel<std::variant_alternative_t<I, AnyHysteresis>>::name) == std::string::npos
-        ? (void)(list +=
-                 (list.empty() ? "" : ", ") +
-                 std::string(ForceModel<std::variant_alternative_t<I, AnyHysteresis>>::name))
-        : (void)0),
-   ...);
+  for (std::size_t k = 0; k < std::size(all); ++k) {
+    if (std::find(all, all + k, all[k]) != all + k) continue;  // the GPI envelopes share "gpi"
+    list += (list.empty() ? "" : ", ") + std::string(all[k]);
+  }
   return list;
 }
 

@@ -9,6 +9,7 @@
 
 #include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
+#include "../support/line_fit.hpp"
 #include "hyst/actuator/actuator_config.hpp"
 #include "hyst/actuator/comparison.hpp"
 #include "hyst/actuator/control_loop.hpp"
@@ -29,25 +30,7 @@ ActuatorConfig msma() {
   return load_actuator_config(kConfigDir + "/msma_assumed.json");
 }
 
-// Least-squares line through (x, y); returns the largest residual.
-double line_fit_max_residual(const std::vector<double>& x, const std::vector<double>& y,
-                             double& slope, double& intercept) {
-  const auto n = static_cast<double>(x.size());
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0;
-  double sxx = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sxy += (x[k] - mx) * (y[k] - my);
-    sxx += (x[k] - mx) * (x[k] - mx);
-  }
-  slope = sxy / sxx;
-  intercept = my - slope * mx;
-  double worst = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    worst = std::max(worst, std::abs(y[k] - (slope * x[k] + intercept)));
-  return worst;
-}
+using test::line_fit_max_residual;
 
 TEST(InverseCompensator, MakesTheForceLinearInTheVirtualCurrent) {
   // GPI[IGPI[k_F i_d]] over a triangle with internal loops: the uncompensated force has loops
