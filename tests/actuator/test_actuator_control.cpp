@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
 #include "../support/line_fit.hpp"
 #include "hyst/actuator/actuator_config.hpp"
@@ -18,6 +17,7 @@
 #include "hyst/control/references.hpp"
 #include "hyst/control/tracking_metrics.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "loop_allocations.hpp"
 
 namespace hyst {
 namespace {
@@ -226,18 +226,7 @@ TEST(NoAllocation, ClosedLoopStep) {
   auto config = msma();
   config.plant.noise = {1e-7, 3};  // the noise generator too
   const auto loop = gpi_loop(config);
-  auto state = loop.initial_state();
-  double current_reference = 0.0;
-  double voltage = 0.0;
-  double sink = 0.0;
-  const long before = test::allocation_count();
-  for (int k = 0; k < 100000; ++k) {
-    const double r = 5e-4 + 3e-4 * std::sin(1e-3 * k);
-    sink +=
-        loop.step(state, ControlStrategy::pid_feedforward, r, current_reference, voltage).measured;
-  }
-  EXPECT_EQ(test::allocation_count() - before, 0);
-  EXPECT_TRUE(std::isfinite(sink));
+  test::expect_closed_loop_does_not_allocate(loop, 100000);
 }
 
 TEST(ActuatorConfig, LoadsBothPresets) {

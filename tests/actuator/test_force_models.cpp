@@ -12,7 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
 #include "../support/line_fit.hpp"
 #include "hyst/actuator/actuator_config.hpp"
@@ -21,6 +20,7 @@
 #include "hyst/actuator/force_compensator.hpp"
 #include "hyst/control/references.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "loop_allocations.hpp"
 
 namespace hyst {
 namespace {
@@ -213,18 +213,7 @@ TEST(NoAllocation, ClosedLoopStepWithTheNumericalInverse) {
   const auto& kp = std::get<KrasnoselskiiPokrovskii>(config.hysteresis);
   const ControlLoop<KrasnoselskiiPokrovskii> loop(
       Actuator<KrasnoselskiiPokrovskii>(kp, config.plant), kp, config.loop);
-  auto state = loop.initial_state();
-  double current_reference = 0.0;
-  double voltage = 0.0;
-  double sink = 0.0;
-  const long before = test::allocation_count();
-  for (int k = 0; k < 20000; ++k) {
-    const double r = 5e-4 + 3e-4 * std::sin(1e-3 * k);
-    sink +=
-        loop.step(state, ControlStrategy::pid_feedforward, r, current_reference, voltage).measured;
-  }
-  EXPECT_EQ(test::allocation_count() - before, 0);
-  EXPECT_TRUE(std::isfinite(sink));
+  test::expect_closed_loop_does_not_allocate(loop, 20000);
 }
 
 }  // namespace

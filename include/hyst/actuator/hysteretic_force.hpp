@@ -65,21 +65,25 @@ struct InverseModel {
   }
 };
 
-template <Envelope E>
-struct InverseModel<GeneralizedPrandtlIshlinskii<E>> {
-  using type = InverseGeneralizedPrandtlIshlinskii<E>;
-  static type make(const GeneralizedPrandtlIshlinskii<E>& model, double input_min,
-                   double input_max) {
+//! An analytic inverse whose options are the input limits {v_min, v_max}.
+template <class Inverse>
+struct LimitedInverse {
+  using type = Inverse;
+  template <class H>
+  static type make(const H& model, double input_min, double input_max) {
     return type(model, {input_min, input_max});
   }
 };
 
+template <Envelope E>
+struct InverseModel<GeneralizedPrandtlIshlinskii<E>>
+    : LimitedInverse<InverseGeneralizedPrandtlIshlinskii<E>> {};
+
 template <>
-struct InverseModel<PrandtlIshlinskii> {
-  using type = InversePrandtlIshlinskii;
-  static type make(const PrandtlIshlinskii& model, double input_min, double input_max) {
-    return type(model, {input_min, input_max});
-  }
+struct InverseModel<PrandtlIshlinskii> : LimitedInverse<InversePrandtlIshlinskii> {};
+
+template <>
+struct InverseModel<ModifiedPrandtlIshlinskii> : LimitedInverse<InverseModifiedPrandtlIshlinskii> {
 };
 
 template <>
@@ -90,14 +94,6 @@ struct InverseModel<Preisach> {
     options.input_min = input_min;
     options.input_max = input_max;
     return type(model, options);
-  }
-};
-
-template <>
-struct InverseModel<ModifiedPrandtlIshlinskii> {
-  using type = InverseModifiedPrandtlIshlinskii;
-  static type make(const ModifiedPrandtlIshlinskii& model, double input_min, double input_max) {
-    return type(model, {input_min, input_max});
   }
 };
 

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -70,6 +71,32 @@ inline BracketedSearch make_bracketed_search(std::string_view who, double input_
   search.max_iterations = static_cast<std::size_t>(std::clamp(4.0 * halvings + 4.0, 4.0, 600.0));
   return search;
 }
+
+//! What the bracketed inverses share: the forward model, the search settings and their
+//! accessors. The inverse's state is the forward model's state.
+template <class M>
+class BracketedInverseBase {
+ public:
+  using Model = M;
+  using State = typename M::State;
+
+  const Model& forward() const { return model_; }
+  double input_min() const { return search_.input_min; }
+  double input_max() const { return search_.input_max; }
+  double input_tolerance() const { return search_.tolerance; }
+  //! The most search steps one sample can take.
+  std::size_t max_iterations() const { return search_.max_iterations; }
+
+  //! The forward model's initial state.
+  State initial_state() const { return model_.initial_state(); }
+
+ protected:
+  BracketedInverseBase(Model model, const BracketedSearch& search)
+      : model_(std::move(model)), search_(search) {}
+
+  Model model_;
+  BracketedSearch search_;
+};
 
 //! The input in [v_min, v_max] where the non-decreasing map `y` reaches `target`, starting from
 //! the bracket split at `now` (clamped into the range; the output there is y(now)).

@@ -17,7 +17,8 @@
 //!     output_tolerance) or no double is left between the ends; then apply the end whose output
 //!     is nearer y*.
 //!
-//! The bracket halves at least every four steps, so a sample takes at most
+//! The search is bracketed_search.hpp, shared with the generic NumericalInverse
+//! (numerical_inverse.hpp). The bracket halves at least every four steps, so a sample takes at most
 //! 4 ceil(log2((v_max - v_min) / tolerance)) + 4 trials (164 with the default tolerance, never
 //! more than 600); typically 5 - 20 (more where the output is nearly flat, as in the tails of a
 //! Gaussian density, fewer for a smooth steep branch).
@@ -60,7 +61,11 @@ struct InversePreisachOptions {
 };
 
 template <EverettFunction Everett>
-class BasicInversePreisach {
+class BasicInversePreisach : public BracketedInverseBase<BasicPreisach<Everett>> {
+  using Base = BracketedInverseBase<BasicPreisach<Everett>>;
+  using Base::model_;
+  using Base::search_;
+
  public:
   using Model = BasicPreisach<Everett>;
   using State = PreisachState;  //!< the forward model's state
@@ -69,21 +74,10 @@ class BasicInversePreisach {
   //! Throws hyst::Error for invalid options ("inverse Preisach input_min = 2 must be <
   //! input_max = 1").
   explicit BasicInversePreisach(Model model, const Options& options = {})
-      : model_(std::move(model)),
-        search_(make_bracketed_search("inverse Preisach",
-                                      options.input_min.value_or(model_.lower()),
-                                      options.input_max.value_or(model_.upper()),
-                                      options.input_tolerance, options.output_tolerance)) {}
-
-  const Model& forward() const { return model_; }
-  double input_min() const { return search_.input_min; }
-  double input_max() const { return search_.input_max; }
-  double input_tolerance() const { return search_.tolerance; }
-  //! The most bisection steps one sample can take.
-  std::size_t max_iterations() const { return search_.max_iterations; }
-
-  //! The forward model's initial state.
-  State initial_state() const { return model_.initial_state(); }
+      : Base(model,
+             make_bracketed_search("inverse Preisach", options.input_min.value_or(model.lower()),
+                                   options.input_max.value_or(model.upper()),
+                                   options.input_tolerance, options.output_tolerance)) {}
 
   //! The input that makes the model produce `target` from `state`, which is advanced with it.
   //! Never throws, never allocates. Precondition: `target` is finite.
@@ -96,10 +90,6 @@ class BasicInversePreisach {
 
   //! solve() without the status, so the inverse also runs wherever a model does.
   double step(State& state, double target) const noexcept { return solve(state, target).input; }
-
- private:
-  Model model_;
-  BracketedSearch search_;
 };
 
 using InversePreisach = BasicInversePreisach<RelayGridEverett>;

@@ -50,10 +50,14 @@ concept Previewable = requires(const Model& model, const typename Model::State& 
 };
 
 template <class M>
-class NumericalInverse {
+class NumericalInverse : public BracketedInverseBase<M> {
   static_assert(Previewable<M> || std::is_trivially_copyable_v<typename M::State>,
                 "NumericalInverse needs the model's preview(const State&, double) const, or a "
                 "State that copies without allocating (trivially copyable)");
+
+  using Base = BracketedInverseBase<M>;
+  using Base::model_;
+  using Base::search_;
 
  public:
   using Model = M;
@@ -63,19 +67,9 @@ class NumericalInverse {
   //! Throws hyst::Error for invalid options ("numerical inverse input_min = 2 must be <
   //! input_max = 1, both finite").
   NumericalInverse(Model model, const Options& options)
-      : model_(std::move(model)),
-        search_(make_bracketed_search("numerical inverse", options.input_min, options.input_max,
-                                      options.input_tolerance, options.output_tolerance)) {}
-
-  const Model& forward() const { return model_; }
-  double input_min() const { return search_.input_min; }
-  double input_max() const { return search_.input_max; }
-  double input_tolerance() const { return search_.tolerance; }
-  //! The most search steps one sample can take (plus three evaluations of the map).
-  std::size_t max_iterations() const { return search_.max_iterations; }
-
-  //! The forward model's initial state.
-  State initial_state() const { return model_.initial_state(); }
+      : Base(std::move(model),
+             make_bracketed_search("numerical inverse", options.input_min, options.input_max,
+                                   options.input_tolerance, options.output_tolerance)) {}
 
   //! The input that makes the model produce `target` from `state`, which is advanced with it.
   //! Never throws, never allocates. Precondition: `target` is finite.
@@ -108,9 +102,6 @@ class NumericalInverse {
       return 0.5 * (search_.input_min + search_.input_max);
     }
   }
-
-  Model model_;
-  BracketedSearch search_;
 };
 
 }  // namespace hyst
