@@ -99,7 +99,9 @@ void bind_actuator(py::module_& module) {
                              [](const ActuatorConfig& c) { return c.plant.sample_time; })
       .def_property_readonly(
           "hysteresis_model",
-          [](const ActuatorConfig& c) { return std::string(hysteresis_name(c.hysteresis)); })
+          [](const ActuatorConfig& c) { return std::string(hysteresis_name(c.hysteresis)); },
+          "The force model's name: gpi, pi, preisach, modified_pi, kp, maxwell_slip or ikuta_sma "
+          "(rate_dependent_pi is rejected: its output depends on the input rate).")
       .def(
           "linearised_plant",
           [](const ActuatorConfig& c) { return LinearisedPlant::of(c.plant, c.loop.force_gain); },

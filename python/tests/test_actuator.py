@@ -87,6 +87,23 @@ def test_config_from_dict_and_errors():
         config.simulate([0.0, float("nan")])
 
 
+def test_force_model_chosen_by_name(msma):
+    # An Ikuta SMA force (heating 3..7 A raises it to 76 N, cooling 4..1 A lowers it to 0): the
+    # numerical inverse is the feedforward, and the closed loop settles as with the GPI.
+    document = json.loads((CONFIG_DIR / "msma_assumed.json").read_text())
+    document["hysteresis"] = {"model": "ikuta_sma", "params": {
+        "martensite_finish": 1.0, "martensite_start": 4.0, "austenite_start": 3.0,
+        "austenite_finish": 7.0, "output_austenite": 76.0, "output_martensite": 0.0}}
+    config = hyst.ActuatorConfig(document)
+    assert config.hysteresis_model == "ikuta_sma"
+    closed = config.simulate(np.full(2000, 5e-4), "pid+ff")
+    assert abs(closed["measured"][-1] - 5e-4) < 1e-6
+    document["hysteresis"] = {"model": "maxwell_slip",
+                              "params": {"stiffness": [2.0], "break_away": [2.0]}}
+    with pytest.raises(hyst.Error, match=r"hysteresis\.params\.linear_stiffness: .*> 0"):
+        hyst.ActuatorConfig(document)
+
+
 def test_pid_terms_and_anti_windup():
     pid = hyst.Pid(kp=2.0, ki=50.0, period=1e-3)
     outputs = [pid.step(1.5, 1.0) for _ in range(10)]

@@ -55,7 +55,15 @@ struct IkutaSmaCodec {
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
+  return make_dynamic_model<IkutaSmaCodec>(ikuta_sma_params_from_json(params_json, "params"),
+                                           state_json);
+}
+
+}  // namespace
+
+IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params_json,
+                                            const std::string& path) {
+  JsonFields fields(params_json, path);
   IkutaSma::Params params;
   params.martensite_finish = fields.number("martensite_finish");
   params.martensite_start = fields.number("martensite_start");
@@ -66,10 +74,8 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   params.initial_fraction = fields.number_or("initial_fraction", params.initial_fraction);
   params.initial_input = fields.number_or("initial_input", params.initial_input);
   fields.finish();
-  return make_dynamic_model<IkutaSmaCodec>(params, state_json);
+  return params;
 }
-
-}  // namespace
 
 ModelEntry ikuta_sma_entry() {
   ModelEntry entry;

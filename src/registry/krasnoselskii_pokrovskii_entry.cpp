@@ -44,9 +44,11 @@ struct KpCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
+}  // namespace
+
+KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
+    const nlohmann::json& params_json, const std::string& path) {
+  JsonFields fields(params_json, path);
   KrasnoselskiiPokrovskii::Params params;
   params.levels = fields.count("levels");
   params.lower = fields.number("lower");
@@ -55,7 +57,15 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   params.ramp_cells = fields.number_or("ramp_cells", params.ramp_cells);
   params.offset = fields.number_or("offset", 0.0);
   fields.finish();
-  return make_dynamic_model<KpCodec>(std::move(params), state_json);
+  return params;
+}
+
+namespace {
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  return make_dynamic_model<KpCodec>(
+      krasnoselskii_pokrovskii_params_from_json(params_json, "params"), state_json);
 }
 
 FitOutcome fit(const FitRequest& request) {

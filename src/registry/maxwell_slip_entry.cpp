@@ -66,16 +66,26 @@ struct MaxwellSlipCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
+}  // namespace
+
+MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_json,
+                                                  const std::string& path) {
+  JsonFields fields(params_json, path);
   MaxwellSlip::Params params;
   params.stiffness = fields.numbers("stiffness");
   params.break_away = fields.numbers("break_away");
   params.linear_stiffness = fields.number_or("linear_stiffness", 0.0);
   params.offset = fields.number_or("offset", 0.0);
   fields.finish();
-  return make_dynamic_model<MaxwellSlipCodec>(std::move(params), state_json);
+  return params;
+}
+
+namespace {
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  return make_dynamic_model<MaxwellSlipCodec>(maxwell_slip_params_from_json(params_json, "params"),
+                                              state_json);
 }
 
 FitOutcome fit(const FitRequest& request) {

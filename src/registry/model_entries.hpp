@@ -1,7 +1,13 @@
 #pragma once
 // One function per built-in model, each in its own <model>_entry.cpp.
 
+#include <string>
+
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
+#include "hyst/models/ikuta_sma.hpp"
+#include "hyst/models/krasnoselskii_pokrovskii.hpp"
+#include "hyst/models/maxwell_slip.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/models/preisach.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -29,5 +35,15 @@ PrandtlIshlinskii::Params prandtl_ishlinskii_params_from_json(const nlohmann::js
 GpiParams generalized_prandtl_ishlinskii_params_from_json(const nlohmann::json& params,
                                                           const std::string& path);
 Preisach::Params preisach_params_from_json(const nlohmann::json& params, const std::string& path);
+ModifiedPrandtlIshlinskii::Params modified_prandtl_ishlinskii_params_from_json(
+    const nlohmann::json& params, const std::string& path);
+KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
+    const nlohmann::json& params, const std::string& path);
+MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params,
+                                                  const std::string& path);
+IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params, const std::string& path);
+// The model-file name of a modified PI model's field: "pi.weights[2]" -> "weights[2]",
+// "pi.offset" -> "pi_offset", "dead_zone.weights" -> "dead_zone_weights".
+std::string modified_prandtl_ishlinskii_file_field(const std::string& field);
 
 }  // namespace hyst::detail

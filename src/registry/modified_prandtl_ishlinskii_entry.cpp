@@ -66,9 +66,11 @@ struct ModifiedPiCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
+}  // namespace
+
+ModifiedPrandtlIshlinskii::Params modified_prandtl_ishlinskii_params_from_json(
+    const nlohmann::json& params_json, const std::string& path) {
+  JsonFields fields(params_json, path);
   ModifiedPrandtlIshlinskii::Params params;
   params.pi.thresholds = fields.numbers("thresholds");
   params.pi.weights = fields.numbers("weights");
@@ -77,21 +79,30 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   params.dead_zone.weights = fields.numbers("dead_zone_weights");
   params.offset = fields.number_or("offset", 0.0);
   fields.finish();
+  return params;
+}
+
+std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"pi.offset", "pi_offset"},
+                                 {"pi.", ""},
+                                 {"dead_zone.", "dead_zone_"}}) {
+    if (field.rfind(from, 0) == 0) return to + field.substr(from.size());
+  }
+  return field;
+}
+
+namespace {
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  auto params = modified_prandtl_ishlinskii_params_from_json(params_json, "params");
   // The model's fields are "pi.thresholds" etc.; in the file they are flat.
   try {
     return make_dynamic_model<ModifiedPiCodec>(std::move(params), state_json);
   } catch (const Error& error) {
-    std::string message = error.what();
-    for (const auto& [from, to] :
-         {std::pair<std::string, std::string>{"params.pi.offset", "params.pi_offset"},
-          {"params.pi.", "params."},
-          {"params.dead_zone.", "params.dead_zone_"}}) {
-      if (message.rfind(from, 0) == 0) {
-        message = to + message.substr(from.size());
-        break;
-      }
-    }
-    throw Error(message);
+    const std::string message = error.what();
+    if (message.rfind("params.", 0) != 0) throw;
+    throw Error("params." + modified_prandtl_ishlinskii_file_field(message.substr(7)));
   }
 }
 

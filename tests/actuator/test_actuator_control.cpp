@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
+#include "../support/line_fit.hpp"
 #include "hyst/actuator/actuator_config.hpp"
 #include "hyst/actuator/comparison.hpp"
 #include "hyst/actuator/control_loop.hpp"
@@ -17,6 +17,7 @@
 #include "hyst/control/references.hpp"
 #include "hyst/control/tracking_metrics.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "loop_allocations.hpp"
 
 namespace hyst {
 namespace {
@@ -29,25 +30,7 @@ ActuatorConfig msma() {
   return load_actuator_config(kConfigDir + "/msma_assumed.json");
 }
 
-// Least-squares line through (x, y); returns the largest residual.
-double line_fit_max_residual(const std::vector<double>& x, const std::vector<double>& y,
-                             double& slope, double& intercept) {
-  const auto n = static_cast<double>(x.size());
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0;
-  double sxx = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sxy += (x[k] - mx) * (y[k] - my);
-    sxx += (x[k] - mx) * (x[k] - mx);
-  }
-  slope = sxy / sxx;
-  intercept = my - slope * mx;
-  double worst = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    worst = std::max(worst, std::abs(y[k] - (slope * x[k] + intercept)));
-  return worst;
-}
+using test::line_fit_max_residual;
 
 TEST(InverseCompensator, MakesTheForceLinearInTheVirtualCurrent) {
   // GPI[IGPI[k_F i_d]] over a triangle with internal loops: the uncompensated force has loops
@@ -243,18 +226,7 @@ TEST(NoAllocation, ClosedLoopStep) {
   auto config = msma();
   config.plant.noise = {1e-7, 3};  // the noise generator too
   const auto loop = gpi_loop(config);
-  auto state = loop.initial_state();
-  double current_reference = 0.0;
-  double voltage = 0.0;
-  double sink = 0.0;
-  const long before = test::allocation_count();
-  for (int k = 0; k < 100000; ++k) {
-    const double r = 5e-4 + 3e-4 * std::sin(1e-3 * k);
-    sink +=
-        loop.step(state, ControlStrategy::pid_feedforward, r, current_reference, voltage).measured;
-  }
-  EXPECT_EQ(test::allocation_count() - before, 0);
-  EXPECT_TRUE(std::isfinite(sink));
+  test::expect_closed_loop_does_not_allocate(loop, 100000);
 }
 
 TEST(ActuatorConfig, LoadsBothPresets) {

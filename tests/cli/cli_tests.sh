@@ -572,6 +572,22 @@ case_actuator_simulate() {
   expect_no_temporaries
 }
 
+# The MSMA actuator with a Krasnosel'skii-Pokrovskii force (numerical inverse) chosen by name.
+case_actuator_simulate_kp() {
+  write_step_reference r.csv
+  awk 'BEGIN { printf "["; for (k = 0; k < 210; ++k) printf "%s%.17g", (k ? "," : ""), 38 / 210; print "]" }' >weights.txt
+  sed '/"hysteresis": {/,/^  },$/c\  "hysteresis": {"model": "kp", "params": {"levels": 20, "lower": 0.0, "upper": 8.0, "offset": 38.0, "weights": '"$(cat weights.txt)"'}},' \
+    "$MSMA_CONFIG" >kp.json
+  grep -q '"model": "kp"' kp.json || fail "kp.json: the force model was not replaced"
+  expect_ok "$HYST" actuator simulate --config kp.json --reference r.csv --out o.csv
+  expect_stdout "wrote o.csv" "1501 samples"
+  awk -v e="$(final_error o.csv)" 'BEGIN { exit !(e < 1.0) }' ||
+    fail "kp pid_feedforward final error $(final_error o.csv) um, expected < 1 um"
+  sed 's/"model": "kp"/"model": "rate_dependent_pi"/' kp.json >rate.json
+  expect_error 1 "rate.json: hysteresis.model: model 'rate_dependent_pi' cannot be an actuator force" -- \
+    "$HYST" actuator simulate --config rate.json --reference r.csv --out o2.csv
+}
+
 case_actuator_compare() {
   mkdir out
   local plots=""

@@ -6,12 +6,22 @@
 //! - Compile time: Actuator<H> and InverseCompensator<H> are templates on the model type (the
 //!   generalized Prandtl-Ishlinskii model with tanh envelopes by default).
 //! - Run time (files, command line, Python): AnyHysteresis, a std::variant over the library's
-//!   models, chosen by the model-file name ("gpi", "pi", "preisach"). Code that runs a loop
-//!   visits the variant once and runs the whole loop inside the visit, so no sample pays for a
-//!   virtual call or a variant dispatch.
+//!   models, chosen by the model-file name ("gpi", "pi", "preisach", "modified_pi", "kp",
+//!   "maxwell_slip", "ikuta_sma"). Code that runs a loop visits the variant once and runs the
+//!   whole loop inside the visit, so no sample pays for a virtual call or a variant dispatch.
 //!
-//! The inverse of each model (InverseModel<H>): IGPI for GPI (analytic), the inverse PI for PI
-//! (analytic), the bracketed numerical inverse for Preisach.
+//! The inverse of each model (InverseModel<H>): analytic where the model has one - IGPI for GPI,
+//! the inverse PI for PI and for Maxwell-slip (a stop-type PI model, invertible iff
+//! linear_stiffness > 0), Kuhnen's inverse for the modified PI - and otherwise the bracketed
+//! numerical inverse: InversePreisach for Preisach, NumericalInverse<H> for every other model
+//! (KP, Ikuta SMA), which needs a monotone one-step map and a preview() or a trivially copyable
+//! state (numerical_inverse.hpp). Adding a model: one alternative in AnyHysteresis and its name
+//! and parameter parser in hysteretic_force.cpp; an InverseModel specialisation only for an
+//! analytic inverse.
+//!
+//! Not a force model: the rate-dependent PI ("rate_dependent_pi"). Its output depends on the
+//! input rate (through the sample time of the model, not of the actuator) and hyst provides no
+//! inverse for it, so hysteresis_from_json() rejects it with a message saying so.
 
 #include <string>
 #include <string_view>
@@ -19,10 +29,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/core/error.hpp"
 #include "hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
+#include "hyst/inverse/numerical_inverse.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
+#include "hyst/models/ikuta_sma.hpp"
+#include "hyst/models/krasnoselskii_pokrovskii.hpp"
+#include "hyst/models/maxwell_slip.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/models/preisach.hpp"
 
@@ -32,27 +49,41 @@ namespace hyst {
 using AnyHysteresis =
     std::variant<GeneralizedPrandtlIshlinskii<TanhEnvelope>,
                  GeneralizedPrandtlIshlinskii<ArctanEnvelope>,
-                 GeneralizedPrandtlIshlinskii<LinearEnvelope>, PrandtlIshlinskii, Preisach>;
+                 GeneralizedPrandtlIshlinskii<LinearEnvelope>, PrandtlIshlinskii, Preisach,
+                 ModifiedPrandtlIshlinskii, KrasnoselskiiPokrovskii, MaxwellSlip, IkutaSma>;
 
-//! The inverse of model type H, built with input (current) limits.
+//! The inverse of model type H, built with input (current) limits: by default the numerical
+//! inverse; specialised below for the models with an analytic or their own inverse.
 template <class H>
-struct InverseModel;
+struct InverseModel {
+  using type = NumericalInverse<H>;
+  static type make(const H& model, double input_min, double input_max) {
+    NumericalInverseOptions options;
+    options.input_min = input_min;
+    options.input_max = input_max;
+    return type(model, options);
+  }
+};
 
-template <Envelope E>
-struct InverseModel<GeneralizedPrandtlIshlinskii<E>> {
-  using type = InverseGeneralizedPrandtlIshlinskii<E>;
-  static type make(const GeneralizedPrandtlIshlinskii<E>& model, double input_min,
-                   double input_max) {
+//! An analytic inverse whose options are the input limits {v_min, v_max}.
+template <class Inverse>
+struct LimitedInverse {
+  using type = Inverse;
+  template <class H>
+  static type make(const H& model, double input_min, double input_max) {
     return type(model, {input_min, input_max});
   }
 };
 
+template <Envelope E>
+struct InverseModel<GeneralizedPrandtlIshlinskii<E>>
+    : LimitedInverse<InverseGeneralizedPrandtlIshlinskii<E>> {};
+
 template <>
-struct InverseModel<PrandtlIshlinskii> {
-  using type = InversePrandtlIshlinskii;
-  static type make(const PrandtlIshlinskii& model, double input_min, double input_max) {
-    return type(model, {input_min, input_max});
-  }
+struct InverseModel<PrandtlIshlinskii> : LimitedInverse<InversePrandtlIshlinskii> {};
+
+template <>
+struct InverseModel<ModifiedPrandtlIshlinskii> : LimitedInverse<InverseModifiedPrandtlIshlinskii> {
 };
 
 template <>
@@ -66,11 +97,38 @@ struct InverseModel<Preisach> {
   }
 };
 
-//! The registry name of the model held: "gpi", "pi" or "preisach".
+//! Maxwell-slip = a PI model (maxwell_slip.hpp) whose initial play state (all 0) matches the
+//! relaxed springs at x = 0, so the PI inverse starts consistent with the forward model.
+template <>
+struct InverseModel<MaxwellSlip> {
+  using type = InversePrandtlIshlinskii;
+  //! Throws hyst::Error unless linear_stiffness > 0 (without it the force saturates at
+  //! F_off +- sum f_i and has no inverse).
+  static type make(const MaxwellSlip& model, double input_min, double input_max) {
+    require_invertible(model);
+    return type(model.to_prandtl_ishlinskii(), {input_min, input_max});
+  }
+  static void require_invertible(const MaxwellSlip& model) {
+    if (!model.is_invertible()) {
+      throw Error(
+          "a Maxwell-slip force needs linear_stiffness > 0 to be invertible (without it the "
+          "force saturates at offset +- sum of break_away)",
+          "linear_stiffness");
+    }
+  }
+};
+
+//! The registry name of the model held ("gpi", "pi", "preisach", "modified_pi", "kp",
+//! "maxwell_slip", "ikuta_sma").
 std::string_view hysteresis_name(const AnyHysteresis& model);
 
+//! The names hysteresis_from_json() accepts, comma separated.
+std::string hysteresis_names();
+
 //! A model from {"model": "<name>", "params": {...}} (the model-file form without state);
-//! `path` prefixes error messages ("actuator.json: hysteresis.params.rho: ...").
+//! `path` prefixes error messages ("actuator.json: hysteresis.params.rho: ..."). A model that
+//! cannot be inverted (Maxwell-slip without linear stiffness, a non-invertible modified PI) and
+//! the rate-dependent PI are rejected with a message saying why.
 AnyHysteresis hysteresis_from_json(const nlohmann::json& document, const std::string& path);
 
 }  // namespace hyst

@@ -92,6 +92,22 @@ class KrasnoselskiiPokrovskii {
     return params_.offset + sum;
   }
 
+  //! The output step() would return for `input`, without changing the state (for the numerical
+  //! inverse's search). No allocation: the ridge values are computed on the fly.
+  double preview(const State& state, double input) const noexcept {
+    const std::size_t n = params_.levels;
+    const double* kappa = state.kernels.data();
+    double sum = 0.0;
+    for (std::size_t i = 0, row = 0; i < n; row += ++i) {
+      const double up = kp_ridge(input - thresholds_[i], two_over_ramp_);
+      for (std::size_t j = 0; j <= i; ++j) {
+        const double down = kp_ridge(input - thresholds_[j], two_over_ramp_);
+        sum += params_.weights[row + j] * kp_kernel_step(up, down, kappa[row + j]);
+      }
+    }
+    return params_.offset + sum;
+  }
+
  private:
   Params params_;
   std::vector<double> thresholds_;
