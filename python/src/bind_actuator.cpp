@@ -100,7 +100,8 @@ void bind_actuator(py::module_& module) {
       .def_property_readonly(
           "hysteresis_model",
           [](const ActuatorConfig& c) { return std::string(hysteresis_name(c.hysteresis)); },
-          "The force model's name: gpi, pi, preisach, modified_pi, kp, maxwell_slip or ikuta_sma "
+          "The force model's name: gpi, pi, preisach, modified_pi, kp, maxwell_slip, ikuta_sma or "
+          "bouc_wen "
           "(rate_dependent_pi is rejected: its output depends on the input rate).")
       .def(
           "linearised_plant",

@@ -99,6 +99,14 @@ struct ForceModel<IkutaSma> {
   }
 };
 
+template <>
+struct ForceModel<BoucWen> {
+  static constexpr std::string_view name = "bouc_wen";
+  static AnyHysteresis parse(const nlohmann::json& params, const std::string& path) {
+    return build<BoucWen>(detail::bouc_wen_params_from_json(params, path), path);
+  }
+};
+
 // A model whose inverse does not exist (is_invertible() false) cannot be compensated: building
 // its inverse throws the message that says why (the limits do not matter for it).
 template <class H>

@@ -65,10 +65,8 @@ struct BoucWenCodec {
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = BoucWenCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<BoucWenCodec>(params, state_json);
+  return make_dynamic_model<BoucWenCodec>(bouc_wen_params_from_json(params_json, "params"),
+                                          state_json);
 }
 
 FitOutcome fit(const FitRequest& request) {
@@ -86,6 +84,14 @@ FitOutcome fit(const FitRequest& request) {
 }
 
 }  // namespace
+
+BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params_json,
+                                          const std::string& path) {
+  JsonFields fields(params_json, path);
+  auto params = BoucWenCodec::params_from_json(fields);
+  fields.finish();
+  return params;
+}
 
 ModelEntry bouc_wen_entry() {
   ModelEntry entry;

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "hyst/models/bouc_wen.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
@@ -42,6 +43,7 @@ KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
 MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params,
                                                   const std::string& path);
 IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params, const std::string& path);
+BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params, const std::string& path);
 // The model-file name of a modified PI model's field: "pi.weights[2]" -> "weights[2]",
 // "pi.offset" -> "pi_offset", "dead_zone.weights" -> "dead_zone_weights".
 std::string modified_prandtl_ishlinskii_file_field(const std::string& field);

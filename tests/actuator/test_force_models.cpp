@@ -131,6 +131,24 @@ TEST(ForceModels, IkutaSmaIsLinearisedByTheNumericalInverse) {
   expect_linear(c, 2.0, bound);
 }
 
+TEST(ForceModels, BoucWenIsLinearisedByTheNumericalInverse) {
+  // F = alpha_k k i + (1 - alpha_k) k z with |z| <= z0 = 1: k = 10, alpha_k = 0.5 give F within
+  // 5 i +- 5 N, so over i in [0, 10] A the targets k_F i_d = 5 i_d for i_d in [1, 9] A are
+  // reachable from every state (5 i_d - 5 >= 0 and 5 i_d + 5 <= 50).
+  const BoucWen model({.a = 1.0, .beta = 0.5, .gamma = 0.5, .stiffness = 10.0, .alpha_k = 0.5});
+  const auto c = compensate(model, 5.0);
+  // |dF/di| <= alpha_k k + (1 - alpha_k) k A = 10 N/A (|dz/dx| <= A on the bounded class).
+  const NumericalInverse<BoucWen> inverse(model, {0.0, 10.0});
+  const double bound = 10.0 * inverse.input_tolerance() + 1e-12 * 50.0;
+  expect_linear(c, 5.0, bound);
+  // Without compensation the same demand shows the hysteresis: the force is not on the line.
+  auto state = model.initial_state();
+  double worst = 0.0;
+  for (double i_d : demand())
+    worst = std::max(worst, std::abs(model.step(state, i_d) - 10.0 * i_d));
+  EXPECT_GT(worst, 1.0);
+}
+
 // The MSMA actuator file with another force model (0..8 A, about 0..76 N).
 nlohmann::json msma_with(const nlohmann::json& hysteresis) {
   auto document = nlohmann::json::parse(io::read_file(kConfigDir + "/msma_assumed.json"));
@@ -149,28 +167,31 @@ nlohmann::json kp_force() {
 }
 
 TEST(ForceModels, ChosenByNameTheClosedLoopSettles) {
-  const std::vector<nlohmann::json> forces{kp_force(),
-                                           {{"model", "modified_pi"},
-                                            {"params",
-                                             {{"thresholds", {0.0, 1.0, 2.0, 3.0}},
-                                              {"weights", {9.0, 1.0, 1.0, 1.0}},
-                                              {"pi_offset", -6.0},
-                                              {"dead_zone_thresholds", {-40.0, 0.0, 50.0}},
-                                              {"dead_zone_weights", {-0.2, 1.0, -0.2}}}}},
-                                           {{"model", "maxwell_slip"},
-                                            {"params",
-                                             {{"stiffness", {2.0, 4.0}},
-                                              {"break_away", {2.0, 8.0}},
-                                              {"linear_stiffness", 10.0},
-                                              {"offset", -10.0}}}},
-                                           {{"model", "ikuta_sma"},
-                                            {"params",
-                                             {{"martensite_finish", 1.0},
-                                              {"martensite_start", 4.0},
-                                              {"austenite_start", 3.0},
-                                              {"austenite_finish", 7.0},
-                                              {"output_austenite", 76.0},
-                                              {"output_martensite", 0.0}}}}};
+  const std::vector<nlohmann::json> forces{
+      kp_force(),
+      {{"model", "modified_pi"},
+       {"params",
+        {{"thresholds", {0.0, 1.0, 2.0, 3.0}},
+         {"weights", {9.0, 1.0, 1.0, 1.0}},
+         {"pi_offset", -6.0},
+         {"dead_zone_thresholds", {-40.0, 0.0, 50.0}},
+         {"dead_zone_weights", {-0.2, 1.0, -0.2}}}}},
+      {{"model", "maxwell_slip"},
+       {"params",
+        {{"stiffness", {2.0, 4.0}},
+         {"break_away", {2.0, 8.0}},
+         {"linear_stiffness", 10.0},
+         {"offset", -10.0}}}},
+      {{"model", "bouc_wen"},
+       {"params", {{"beta", 0.5}, {"gamma", 0.5}, {"stiffness", 19.0}, {"alpha_k", 0.5}}}},
+      {{"model", "ikuta_sma"},
+       {"params",
+        {{"martensite_finish", 1.0},
+         {"martensite_start", 4.0},
+         {"austenite_start", 3.0},
+         {"austenite_finish", 7.0},
+         {"output_austenite", 76.0},
+         {"output_martensite", 0.0}}}}};
   for (const auto& force : forces) {
     const auto name = force["model"].get<std::string>();
     const auto config = actuator_config_from_json(msma_with(force), name + ".json");
@@ -194,7 +215,8 @@ TEST(ForceModels, UnsupportedOrNonInvertibleModelsAreRejected) {
   EXPECT_HYST_ERROR(actuator_config_from_json(rate, "r.json"),
                     "r.json: hysteresis.model: model 'rate_dependent_pi' cannot be an actuator "
                     "force: its output depends on the input rate");
-  EXPECT_EQ(hysteresis_names(), "gpi, pi, preisach, modified_pi, kp, maxwell_slip, ikuta_sma");
+  EXPECT_EQ(hysteresis_names(),
+            "gpi, pi, preisach, modified_pi, kp, maxwell_slip, ikuta_sma, bouc_wen");
   auto unknown = msma_with({{"model", "bouc"}, {"params", nlohmann::json::object()}});
   EXPECT_HYST_ERROR(actuator_config_from_json(unknown, "u.json"), "unknown model 'bouc'");
   // A modified PI whose dead-zone partial sum 1 - 1.2 < 0 has no inverse: the file's field name.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/expect_error.hpp"
 #include "hyst/core/invert.hpp"
 #include "hyst/inverse/monotone_inverse.hpp"
 #include "hyst/models/bouc_wen.hpp"
@@ -55,6 +56,26 @@ TEST(MonotoneInverse, SaturatesAtTheInputLimits) {
   const auto low = inverse.solve(state, -100.0);
   EXPECT_EQ(low.status, InverseStatus::below_range);
   EXPECT_EQ(low.input, -1.0);
+}
+
+TEST(MonotoneInverse, UnboundedRangeByDefaultInRegistryUse) {
+  // Infinite limits (the registry's default): the bracket grows until it holds the target.
+  const BoucWen model(BoucWen::Params{});
+  const MonotoneInverse<BoucWen> inverse(model, -INFINITY, INFINITY);
+  MonotoneInverse<BoucWen>::State state{model.initial_state(), 0.0};
+  auto probe = model.initial_state();
+  const double target = model.step(probe, 250.0);
+  const auto sample = inverse.solve(state, target);
+  EXPECT_EQ(sample.status, InverseStatus::ok);
+  EXPECT_NEAR(sample.input, 250.0, 1e-9);
+}
+
+TEST(MonotoneInverse, RejectsAnEmptyOrNanRange) {
+  const BoucWen model(BoucWen::Params{});
+  EXPECT_HYST_ERROR(static_cast<void>(MonotoneInverse<BoucWen>(model, 1.0, 1.0)),
+                    "input_min = 1 must be < input_max");
+  EXPECT_HYST_ERROR(static_cast<void>(MonotoneInverse<BoucWen>(model, NAN, 1.0)),
+                    "input_min = nan");
 }
 
 }  // namespace

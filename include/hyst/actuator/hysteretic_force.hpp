@@ -7,21 +7,23 @@
 //!   generalized Prandtl-Ishlinskii model with tanh envelopes by default).
 //! - Run time (files, command line, Python): AnyHysteresis, a std::variant over the library's
 //!   models, chosen by the model-file name ("gpi", "pi", "preisach", "modified_pi", "kp",
-//!   "maxwell_slip", "ikuta_sma"). Code that runs a loop visits the variant once and runs the
-//!   whole loop inside the visit, so no sample pays for a virtual call or a variant dispatch.
+//!   "maxwell_slip", "ikuta_sma", "bouc_wen"). Code that runs a loop visits the variant once and
+//!   runs the whole loop inside the visit, so no sample pays for a virtual call or a variant
+//!   dispatch.
 //!
 //! The inverse of each model (InverseModel<H>): analytic where the model has one - IGPI for GPI,
 //! the inverse PI for PI and for Maxwell-slip (a stop-type PI model, invertible iff
 //! linear_stiffness > 0), Kuhnen's inverse for the modified PI - and otherwise the bracketed
 //! numerical inverse: InversePreisach for Preisach, NumericalInverse<H> for every other model
-//! (KP, Ikuta SMA), which needs a monotone one-step map and a preview() or a trivially copyable
-//! state (numerical_inverse.hpp). Adding a model: one alternative in AnyHysteresis and its name
-//! and parameter parser in hysteretic_force.cpp; an InverseModel specialisation only for an
+//! (KP, Ikuta SMA, Bouc-Wen), which needs a monotone one-step map and a preview() or a trivially
+//! copyable state (numerical_inverse.hpp). Adding a model: one alternative in AnyHysteresis and its
+//! name and parameter parser in hysteretic_force.cpp; an InverseModel specialisation only for an
 //! analytic inverse.
 //!
 //! Not a force model: the rate-dependent PI ("rate_dependent_pi"). Its output depends on the
 //! input rate (through the sample time of the model, not of the actuator) and hyst provides no
-//! inverse for it, so hysteresis_from_json() rejects it with a message saying so.
+//! inverse for it, so hysteresis_from_json() rejects it with a message saying so. Nor is the
+//! Bouc-Wen oscillator ("bouc_wen_oscillator"), a whole mass-spring system of its own.
 
 #include <string>
 #include <string_view>
@@ -35,6 +37,7 @@
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
 #include "hyst/inverse/numerical_inverse.hpp"
+#include "hyst/models/bouc_wen.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
@@ -46,11 +49,10 @@
 namespace hyst {
 
 //! Every hysteresis model an actuator's force can follow, chosen at run time.
-using AnyHysteresis =
-    std::variant<GeneralizedPrandtlIshlinskii<TanhEnvelope>,
-                 GeneralizedPrandtlIshlinskii<ArctanEnvelope>,
-                 GeneralizedPrandtlIshlinskii<LinearEnvelope>, PrandtlIshlinskii, Preisach,
-                 ModifiedPrandtlIshlinskii, KrasnoselskiiPokrovskii, MaxwellSlip, IkutaSma>;
+using AnyHysteresis = std::variant<
+    GeneralizedPrandtlIshlinskii<TanhEnvelope>, GeneralizedPrandtlIshlinskii<ArctanEnvelope>,
+    GeneralizedPrandtlIshlinskii<LinearEnvelope>, PrandtlIshlinskii, Preisach,
+    ModifiedPrandtlIshlinskii, KrasnoselskiiPokrovskii, MaxwellSlip, IkutaSma, BoucWen>;
 
 //! The inverse of model type H, built with input (current) limits: by default the numerical
 //! inverse; specialised below for the models with an analytic or their own inverse.

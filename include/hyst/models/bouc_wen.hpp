@@ -21,7 +21,11 @@
 //! Integration: the model is rate independent, so it is integrated in the input,
 //! dz/dx = A - beta s |z|^(n-1) z - gamma |z|^n with s = sign(dx) over a sample, by classical RK4
 //! with max(substeps, ceil(|dx| / max_input_step)) steps (20 RK4 sub-steps and 200 differ by
-//! 7e-11 on the reference check). State: previous input x and z; initial state x = 0, z = 0.
+//! 7e-11 on the reference check). max_input_step = 0 means automatic: z0 / (4 n A), a quarter of
+//! the input span over which z saturates, so that a large jump between two samples is still
+//! integrated stably and the output stays monotone in the input (which the numerical inverse
+//! relies on); ordinary sample spacings stay at `substeps` steps. State: previous input x and z;
+//! initial state x = 0, z = 0.
 
 #include <array>
 #include <cmath>
@@ -73,7 +77,7 @@ class BoucWen {
     double stiffness = 1.0;       //!< k [output/input units] > 0
     double alpha_k = 0.5;         //!< share of the linear spring, [0, 1]
     std::size_t substeps = 20;    //!< minimum RK4 steps per sample, 1..100000
-    double max_input_step = 0.0;  //!< largest RK4 step in x [input units]; 0 = no limit
+    double max_input_step = 0.0;  //!< largest RK4 step in x [input units]; 0 = automatic
   };
   //! The identifiable normalised parameters (file comment).
   struct Normalised {
@@ -116,7 +120,7 @@ class BoucWen {
     if (dx != 0.0) {
       state.hysteretic = detail::bouc_wen_advance(
           params_.a, params_.beta, params_.gamma, params_.n, state.hysteretic, dx,
-          detail::substeps_for(dx, params_.substeps, params_.max_input_step));
+          detail::substeps_for(dx, params_.substeps, max_input_step_));
       state.input = input;
     }
     return output(state);
@@ -125,6 +129,7 @@ class BoucWen {
  private:
   Params params_;
   double z_bound_;
+  double max_input_step_;  //!< params_.max_input_step, or the automatic bound when that is 0
 };
 
 }  // namespace hyst
