@@ -2,7 +2,6 @@
 // status; on the measured Mn-Zn ferrite loops the fit of the largest loop predicts the smaller
 // ones.
 
-#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -35,13 +34,10 @@ TEST(FitJilesAtherton, RecoversKnownParametersFromSimulatedLoops) {
     truth.max_field_step = 6000.0 / 2000.0;  // the fit's default step for this loop
     const auto b = simulate_bh_loop(JilesAtherton(truth), h);
     const BhLoop loop{h, b};
-    const auto start = std::chrono::steady_clock::now();
     JilesAthertonFitOptions options;
     options.variant = variant;
     const auto fit = fit_jiles_atherton(std::span(&loop, 1), {}, options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 30.0);  // a few seconds on one free core
+    // Its time is a benchmark figure (docs/performance.md), not a test condition.
     EXPECT_EQ(fit.report.termination, Termination::converged) << fit.report.message;
     const auto& p = fit.model.params();
     EXPECT_NEAR(p.ms, truth.ms, 1e-3 * truth.ms) << to_string(variant);
