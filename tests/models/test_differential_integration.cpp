@@ -228,6 +228,14 @@ TEST(DifferentialIntegration, RejectsBadTolerance) {
   EXPECT_HYST_ERROR(JilesAtherton{ja}, "tolerance = 1e-20 must be 0 (fixed RK4 sub-steps) or in");
 }
 
+TEST(DifferentialIntegration, AdaptiveStepPassesNanOn) {
+  Duhem::Params p;
+  p.tolerance = 1e-10;
+  const Duhem model(p);
+  auto state = model.initial_state();
+  EXPECT_TRUE(std::isnan(model.step(state, std::nan(""))));
+}
+
 TEST(DifferentialIntegration, ModelFileReadsAndWritesTolerance) {
   for (const char* name : {"bouc_wen", "duhem", "jiles_atherton"}) {
     SCOPED_TRACE(name);

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 #include <boost/numeric/odeint.hpp>
@@ -27,6 +28,10 @@ inline void dopri5_integrate(std::array<double, N>& x, double span, double toler
   auto stepper = odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_dopri5<State>());
   // Odeint runs forward over u in [0, |span|]; dx/du = sign(span) f.
   const double length = std::abs(span);
+  if (!std::isfinite(length)) {  // a NaN or infinite input: NaN out, as with fixed RK4 steps
+    x.fill(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   const double sign = span < 0.0 ? -1.0 : 1.0;
   const double inverse_length = 1.0 / length;
   auto system = [&](const State& s, State& dxdu, double u) {
