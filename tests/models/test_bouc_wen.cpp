@@ -85,20 +85,24 @@ TEST(BoucWen, ConvergesToFineStepReference) {
 }
 
 TEST(BoucWen, MaxInputStepMakesLargeStepsAccurate) {
-  // One sample from 0 to 2: with max_input_step = 0.01 it matches a 2000-step reference, with a
-  // single RK4 step (max_input_step above the step; 0 would be the automatic bound) it does not.
+  // One sample from 0 to 2: with max_input_step = 0.01 it matches a 20000-step reference, with a
+  // single RK4 step (a bound beyond the jump) it does not; the automatic bound (0) keeps it
+  // accurate too.
   auto p = reference_params();
   p.substeps = 1;
-  p.max_input_step = 10.0;
+  p.max_input_step = 1e9;
   const BoucWen single(p);
   p.max_input_step = 0.01;
   const BoucWen limited(p);
   p.max_input_step = 0.0;
-  p.substeps = 2000;
+  const BoucWen automatic(p);
+  p.max_input_step = 1e-4;
   const BoucWen reference(p);
-  auto s1 = single.initial_state(), s2 = limited.initial_state(), s3 = reference.initial_state();
+  auto s1 = single.initial_state(), s2 = limited.initial_state(), s3 = reference.initial_state(),
+       s4 = automatic.initial_state();
   const double y_reference = reference.step(s3, 2.0);
   EXPECT_NEAR(limited.step(s2, 2.0), y_reference, 1e-8);
+  EXPECT_NEAR(automatic.step(s4, 2.0), y_reference, 1e-5);
   EXPECT_GT(std::abs(single.step(s1, 2.0) - y_reference), 1e-3);
 }
 
