@@ -27,6 +27,7 @@ BoucWen::BoucWen(Params params) : params_(params) {
   if (params_.alpha_k > 1.0) rules.fail("alpha_k", "alpha_k", params_.alpha_k, "must be <= 1");
   rules.count_in(params_.substeps, 1, 100000, "substeps", "substeps");
   rules.at_least(params_.max_input_step, 0.0, "max_input_step", "max_input_step");
+  rules.integration_tolerance(params_.tolerance);
   z_bound_ = std::pow(params_.a / (params_.beta + params_.gamma), 1.0 / params_.n);
   max_input_step_ = params_.max_input_step > 0.0 ? params_.max_input_step
                                                  : z_bound_ / (4.0 * params_.n * params_.a);

@@ -16,7 +16,7 @@ BoucWenOscillator::BoucWenOscillator(Params params) : params_(params) {
   rules.at_least(params_.nu, 1.0, "exponent nu", "nu");
   rules.greater(params_.sample_time, 0.0, "sample time Ts", "sample_time");
   rules.count_in(params_.substeps, 1, 100000, "substeps", "substeps");
-  rules.at_least(params_.tolerance, 0.0, "tolerance", "tolerance");
+  rules.integration_tolerance(params_.tolerance);
   coefficients_ = {params_.mass,
                    params_.damping,
                    params_.stiffness,

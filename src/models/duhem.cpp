@@ -27,6 +27,7 @@ Duhem::Duhem(Params params) : params_(params) {
   }
   rules.count_in(params_.substeps, 1, 100000, "substeps", "substeps");
   rules.at_least(params_.max_input_step, 0.0, "max_input_step", "max_input_step");
+  rules.integration_tolerance(params_.tolerance);
 }
 
 Duhem::State Duhem::make_state(double input, double output) const {

@@ -1,5 +1,7 @@
 // Registry entry of the Bouc-Wen model: its model-file form, its numerical inverse and its fitter.
 
+#include <string>
+
 #include <fmt/format.h>
 
 #include "hyst/identify/fit_bouc_wen.hpp"
@@ -23,7 +25,8 @@ struct BoucWenCodec {
             {"stiffness", p.stiffness},
             {"alpha_k", p.alpha_k},
             {"substeps", p.substeps},
-            {"max_input_step", p.max_input_step}};
+            {"max_input_step", p.max_input_step},
+            {"tolerance", p.tolerance}};
   }
   static Model::Params params_from_json(JsonFields& fields) {
     Model::Params p;
@@ -35,6 +38,7 @@ struct BoucWenCodec {
     p.alpha_k = fields.number_or("alpha_k", p.alpha_k);
     p.substeps = fields.count_or("substeps", p.substeps);
     p.max_input_step = fields.number_or("max_input_step", p.max_input_step);
+    p.tolerance = fields.number_or("tolerance", p.tolerance);
     return p;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -52,9 +56,14 @@ struct BoucWenCodec {
     return fmt::format(
         "Bouc-Wen model: A = {}, beta = {}, gamma = {}, n = {}, k = {}, alpha_k = {}\n"
         "  normalised: rho = {:.8g}, sigma = {:.8g}, kx = {:.8g}, kw = {:.8g}; |z| <= z0 = {:.8g}\n"
-        "  integration: RK4 in the input, {} sub-steps per sample, max input step {}\n",
+        "  integration: {}\n",
         p.a, p.beta, p.gamma, p.n, p.stiffness, p.alpha_k, w.rho, w.sigma, w.kx, w.kw,
-        model.z_bound(), p.substeps, p.max_input_step);
+        model.z_bound(),
+        p.n == 1.0 ? std::string("exact solution per sample (n = 1)")
+        : p.tolerance > 0.0
+            ? fmt::format("adaptive Dormand-Prince in the input, tolerance {}", p.tolerance)
+            : fmt::format("RK4 in the input, {} sub-steps per sample, max input step {}",
+                          p.substeps, p.max_input_step));
   }
   static bool has_inverse(const Model&) { return true; }
   static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
@@ -107,6 +116,7 @@ ModelEntry bouc_wen_entry() {
       {"alpha_k", "number", "-", "share of the linear spring in [0, 1] (default 0.5)"},
       {"substeps", "whole number", "", "minimum RK4 steps per sample (20)"},
       {"max_input_step", "number", "input units", "largest RK4 step, 0 = none (0)"},
+      {"tolerance", "number", "", "n != 1, > 0: adaptive Dormand-Prince with this tolerance (0)"},
   };
   entry.fit_options = {
       {"fit_n", "boolean", "", "also fit the exponent n (false: n = 1)"},

@@ -22,7 +22,8 @@ struct DuhemCodec {
             {"v_sat", p.v_sat},
             {"g_peak", p.g_peak},
             {"substeps", p.substeps},
-            {"max_input_step", p.max_input_step}};
+            {"max_input_step", p.max_input_step},
+            {"tolerance", p.tolerance}};
   }
   static Model::Params params_from_json(JsonFields& fields) {
     Model::Params p;
@@ -33,6 +34,7 @@ struct DuhemCodec {
     p.g_peak = fields.number("g_peak");
     p.substeps = fields.count_or("substeps", p.substeps);
     p.max_input_step = fields.number_or("max_input_step", p.max_input_step);
+    p.tolerance = fields.number_or("tolerance", p.tolerance);
     return p;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -49,9 +51,13 @@ struct DuhemCodec {
     return fmt::format(
         "Duhem model (Coleman-Hodgdon): alpha = {}, f(v) = {} v + {} tanh(v / {}), "
         "g(v) = {} + {} sech^2(v / {}); Coleman-Hodgdon margin {:.4g}\n"
-        "  integration: RK4 in the input, {} sub-steps per sample, max input step {}\n",
+        "  integration: {}\n",
         p.alpha, p.f_slope, p.f_sat, p.v_sat, p.f_slope, p.g_peak, p.v_sat,
-        model.coleman_hodgdon_margin(), p.substeps, p.max_input_step);
+        model.coleman_hodgdon_margin(),
+        p.tolerance > 0.0
+            ? fmt::format("adaptive Dormand-Prince in the input, tolerance {}", p.tolerance)
+            : fmt::format("RK4 in the input, {} sub-steps per sample, max input step {}",
+                          p.substeps, p.max_input_step));
   }
   static bool has_inverse(const Model& model) { return model.params().f_slope > 0.0; }
   static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
@@ -96,6 +102,7 @@ ModelEntry duhem_entry() {
       {"g_peak", "number", "output / input units", "peak of g above f_slope, <= f_sat / v_sat"},
       {"substeps", "whole number", "", "minimum RK4 steps per sample (20)"},
       {"max_input_step", "number", "input units", "largest RK4 step, 0 = none (0)"},
+      {"tolerance", "number", "", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
   };
   entry.fit_options = {
       {"substeps", "whole number", "", "RK4 steps per sample (20)"},

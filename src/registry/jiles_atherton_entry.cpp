@@ -23,7 +23,8 @@ struct JilesAthertonCodec {
             {"c", p.c},
             {"alpha", p.alpha},
             {"variant", std::string(to_string(p.variant))},
-            {"max_field_step", p.max_field_step}};
+            {"max_field_step", p.max_field_step},
+            {"tolerance", p.tolerance}};
   }
   static Model::Params params_from_json(JsonFields& fields) {
     Model::Params p;
@@ -36,6 +37,7 @@ struct JilesAthertonCodec {
       p.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
     }
     p.max_field_step = fields.number_or("max_field_step", p.max_field_step);
+    p.tolerance = fields.number_or("tolerance", p.tolerance);
     return p;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -51,9 +53,12 @@ struct JilesAthertonCodec {
     const auto& p = model.params();
     return fmt::format(
         "Jiles-Atherton model ({} variant): M_s = {} A/m, a = {} A/m, k = {} A/m, c = {}, "
-        "alpha = {}\n  input H [A/m], output B [T]; RK4 in H with steps <= {} A/m\n",
+        "alpha = {}\n  input H [A/m], output B [T]; {}\n",
         to_string(p.variant), p.ms, p.a, p.k, p.c, p.alpha,
-        p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0);
+        p.tolerance > 0.0
+            ? fmt::format("adaptive Dormand-Prince in H, tolerance {} A/m", p.tolerance)
+            : fmt::format("RK4 in H with steps <= {} A/m",
+                          p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0));
   }
   static bool has_inverse(const Model&) { return true; }  // dB/dH >= mu0 > 0
   static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
@@ -121,6 +126,7 @@ ModelEntry jiles_atherton_entry() {
       {"alpha", "number", "-", "coupling >= 0, alpha M_s / (3 a) < 1"},
       {"variant", "string", "", "original (default) or venkataraman (COMSOL, Altair Flux)"},
       {"max_field_step", "number", "A/m", "largest RK4 step in H, 0 = k / 50 (0)"},
+      {"tolerance", "number", "A/m", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
   };
   entry.fit_options = {
       {"variant", "string", "", "original or venkataraman"},

@@ -1,5 +1,6 @@
-// step() of the differential models must not allocate (fixed-size RK4 states): counted with the
-// replacing operator new over 100 000 steps of each.
+// step() of the differential models must not allocate (fixed-size RK4 and Dormand-Prince
+// std::array states, the exact Bouc-Wen path): counted with the replacing operator new over
+// 100 000 steps of each.
 
 #include <cmath>
 #include <vector>
@@ -37,9 +38,19 @@ TEST(NoAllocationDifferential, EveryModelStep) {
   auto adaptive = BoucWenOscillator::benchmark();
   adaptive.tolerance = 1e-8;  // Boost.Odeint Dormand-Prince on std::array
   expect_no_allocation(BoucWenOscillator(adaptive), 10.0);
+  BoucWen::Params bouc_wen_adaptive;
+  bouc_wen_adaptive.n = 1.5;
+  bouc_wen_adaptive.tolerance = 1e-8;
+  expect_no_allocation(BoucWen(bouc_wen_adaptive), 1.0);
   expect_no_allocation(Duhem(Duhem::Params{}), 1.0);
+  Duhem::Params duhem_adaptive;
+  duhem_adaptive.tolerance = 1e-8;
+  expect_no_allocation(Duhem(duhem_adaptive), 1.0);
   expect_no_allocation(BacklashLike(BacklashLike::Params{}), 1.0);
   expect_no_allocation(JilesAtherton(JilesAtherton::Params{}), 100.0);
+  JilesAtherton::Params jiles_atherton_adaptive;
+  jiles_atherton_adaptive.tolerance = 1e-8;
+  expect_no_allocation(JilesAtherton(jiles_atherton_adaptive), 100.0);
 }
 
 }  // namespace

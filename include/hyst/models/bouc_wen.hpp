@@ -19,28 +19,40 @@
 //! identifiable, and the fitter works in it. from_normalised() returns the standard set with A = 1.
 //!
 //! Integration: the model is rate independent, so it is integrated in the input,
-//! dz/dx = A - beta s |z|^(n-1) z - gamma |z|^n with s = sign(dx) over a sample, by classical RK4
-//! with max(substeps, ceil(|dx| / max_input_step)) steps (20 RK4 sub-steps and 200 differ by
-//! 7e-11 on the reference check). max_input_step = 0 means automatic: z0 / (4 n A), a quarter of
-//! the input span over which z saturates, so that a large jump between two samples is still
-//! integrated stably and the output stays monotone in the input (which the numerical inverse
-//! relies on); ordinary sample spacings stay at `substeps` steps. State: previous input x and z;
+//! dz/dx = A - beta s |z|^(n-1) z - gamma |z|^n with s = sign(dx) over a sample.
+//! - n = 1: exactly, whatever the sample spacing. While z keeps its sign the equation is linear,
+//!   dz/du = s A - c z in u = |x - x_start| with c = beta + s gamma (z >= 0) or beta - s gamma
+//!   (z < 0), c >= 0 in the bounded class; z relaxes exponentially to s A / c (linearly when
+//!   c = 0). Where z crosses 0 inside the sample the crossing point is computed and the solution
+//!   continues with the other coefficient (bouc_wen_exact_advance). `substeps`, `max_input_step`
+//!   and `tolerance` do not apply.
+//! - n != 1, `tolerance` > 0: adaptively by Boost.Odeint's Dormand-Prince 5(4) with that absolute
+//!   and relative error tolerance per step (no allocation: std::array state).
+//! - n != 1, `tolerance` = 0: classical RK4 with max(substeps, ceil(|dx| / max_input_step)) steps.
+//!   max_input_step = 0 means automatic: z0 / (4 n A), a quarter of the input span over which z
+//!   saturates, so that a large jump between two samples is still integrated stably and the output
+//!   stays monotone in the input (which the numerical inverse relies on); ordinary sample spacings
+//!   stay at `substeps` steps.
+//! The fitter (fit_bouc_wen.hpp) integrates with the templated RK4 path (bouc_wen_advance), which
+//! differentiates through ceres::Jet, also for the exponent n. State: previous input x and z;
 //! initial state x = 0, z = 0.
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 
+#include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
 
 namespace detail {
 
-//! dz/dx = A - beta s |z|^(n-1) z - gamma |z|^n, advanced over dx with `steps` RK4 steps.
+//! dz/dx = A - beta s |z|^(n-1) z - gamma |z|^n, advanced over dx with `steps` RK4 steps, or
+//! adaptively with error tolerance `tolerance` when that is > 0 (double only).
 template <class T>
 inline T bouc_wen_advance(const T& a, const T& beta, const T& gamma, const T& n, T z, double dx,
-                          std::size_t steps) {
+                          std::size_t steps, double tolerance = 0.0) {
   using std::abs;
   using std::pow;
   const double s = dx > 0.0 ? 1.0 : -1.0;
@@ -53,8 +65,35 @@ inline T bouc_wen_advance(const T& a, const T& beta, const T& gamma, const T& n,
     return std::array<T, 1>{a - s * beta * (state[0] < 0.0 ? -power : power) - gamma * power};
   };
   std::array<T, 1> x{z};
-  rk4_integrate(x, T(dx), steps, rhs);
+  integrate_sample(x, T(dx), steps, tolerance, rhs);
   return x[0];
+}
+
+//! The exact solution of dz/dx = A - beta s z - gamma |z| (n = 1) over dx (file comment).
+inline double bouc_wen_exact_advance(double a, double beta, double gamma, double z, double dx) {
+  const double s = dx > 0.0 ? 1.0 : -1.0;
+  double remaining = std::abs(dx);  // u still to go
+  // At most two pieces: z only crosses 0 towards sign s, and then keeps that sign.
+  for (int piece = 0; piece < 2 && remaining > 0.0; ++piece) {
+    const double z_sign = z > 0.0 ? 1.0 : (z < 0.0 ? -1.0 : s);  // at 0, z moves towards s
+    const double c = beta + s * z_sign * gamma;                  // dz/du = s A - c z
+    const double slope_at_zero = s * a;
+    const bool crosses = z * s < 0.0;  // z moves towards 0 and beyond
+    double crossing = remaining;       // u where z reaches 0
+    if (crosses) {
+      crossing = c > 0.0 ? std::log1p(-z * c / slope_at_zero) / c : -z / slope_at_zero;
+    }
+    if (!crosses || crossing >= remaining) {
+      if (c > 0.0) {
+        const double equilibrium = slope_at_zero / c;
+        return z - (equilibrium - z) * std::expm1(-c * remaining);
+      }
+      return z + slope_at_zero * remaining;
+    }
+    z = 0.0;
+    remaining -= crossing;
+  }
+  return z;
 }
 
 inline std::size_t substeps_for(double dx, std::size_t substeps, double max_step) {
@@ -78,6 +117,7 @@ class BoucWen {
     double alpha_k = 0.5;         //!< share of the linear spring, [0, 1]
     std::size_t substeps = 20;    //!< minimum RK4 steps per sample, 1..100000
     double max_input_step = 0.0;  //!< largest RK4 step in x [input units]; 0 = automatic
+    double tolerance = 0.0;       //!< n != 1: 0 or [1e-14, 1], adaptive Dormand-Prince
   };
   //! The identifiable normalised parameters (file comment).
   struct Normalised {
@@ -118,9 +158,13 @@ class BoucWen {
   double step(State& state, double input) const noexcept {
     const double dx = input - state.input;
     if (dx != 0.0) {
-      state.hysteretic = detail::bouc_wen_advance(
-          params_.a, params_.beta, params_.gamma, params_.n, state.hysteretic, dx,
-          detail::substeps_for(dx, params_.substeps, max_input_step_));
+      state.hysteretic =
+          params_.n == 1.0
+              ? detail::bouc_wen_exact_advance(params_.a, params_.beta, params_.gamma,
+                                               state.hysteretic, dx)
+              : detail::bouc_wen_advance(
+                    params_.a, params_.beta, params_.gamma, params_.n, state.hysteretic, dx,
+                    detail::substeps_for(dx, params_.substeps, max_input_step_), params_.tolerance);
       state.input = input;
     }
     return output(state);

@@ -32,7 +32,6 @@
 #include <cmath>
 #include <cstddef>
 #include <string_view>
-#include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
@@ -73,13 +72,7 @@ inline void bouc_wen_oscillator_advance(const BoucWenOscillatorCoefficients<T>& 
     return std::array<T, 3>{v, (u - p.damping * v - p.stiffness * s[0] - z) * inverse_mass,
                             p.alpha * v - hysteretic};
   };
-  if constexpr (std::is_same_v<T, double>) {
-    if (tolerance > 0.0) {
-      dopri5_integrate(x, dt, tolerance, rhs);
-      return;
-    }
-  }
-  rk4_integrate(x, T(dt), substeps, rhs);
+  integrate_sample(x, T(dt), substeps, tolerance, rhs);
 }
 
 }  // namespace detail

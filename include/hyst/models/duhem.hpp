@@ -17,13 +17,17 @@
 //! With f_sat = 0 the model is the backlash-like model (backlash_like.hpp, exact steps).
 //!
 //! Integration: rate independent, integrated in the input, dy/dv = alpha s (f(v) - y) + g(v),
-//! s = sign(dv), by classical RK4 with max(substeps, ceil(|dv| / max_input_step)) steps.
+//! s = sign(dv): with `tolerance` > 0 adaptively by Boost.Odeint's Dormand-Prince 5(4) with that
+//! absolute and relative error tolerance per step (accurate whatever the sample spacing; no
+//! allocation), otherwise by classical RK4 with max(substeps, ceil(|dv| / max_input_step)) steps
+//! (the path the fitter differentiates with ceres::Jet).
 //! State: the previous input v and y; initial state v = 0, y = 0 (= f(0)).
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 
+#include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
 #include "hyst/models/bouc_wen.hpp"  // detail::substeps_for
 
@@ -33,7 +37,8 @@ namespace detail {
 
 template <class T>
 inline T duhem_advance(const T& alpha, const T& f_slope, const T& f_sat, const T& v_sat,
-                       const T& g_peak, double v0, T y, double dv, std::size_t steps) {
+                       const T& g_peak, double v0, T y, double dv, std::size_t steps,
+                       double tolerance = 0.0) {
   using std::cosh;
   using std::tanh;
   const double s = dv > 0.0 ? 1.0 : -1.0;
@@ -46,7 +51,7 @@ inline T duhem_advance(const T& alpha, const T& f_slope, const T& f_sat, const T
     return std::array<T, 1>{s * alpha * (f - state[0]) + g};
   };
   std::array<T, 1> x{y};
-  rk4_integrate(x, T(dv), steps, rhs);
+  integrate_sample(x, T(dv), steps, tolerance, rhs);
   return x[0];
 }
 
@@ -62,6 +67,7 @@ class Duhem {
     double g_peak = 0.5;          //!< [output/input units] <= f_sat / v_sat
     std::size_t substeps = 20;    //!< minimum RK4 steps per sample, 1..100000
     double max_input_step = 0.0;  //!< largest RK4 step in v; 0 = no limit
+    double tolerance = 0.0;       //!< 0 or [1e-14, 1]: adaptive Dormand-Prince
   };
   struct State {
     double input = 0.0;   //!< v of the previous sample
@@ -92,7 +98,8 @@ class Duhem {
     if (dv != 0.0) {
       state.output = detail::duhem_advance(
           params_.alpha, params_.f_slope, params_.f_sat, params_.v_sat, params_.g_peak, state.input,
-          state.output, dv, detail::substeps_for(dv, params_.substeps, params_.max_input_step));
+          state.output, dv, detail::substeps_for(dv, params_.substeps, params_.max_input_step),
+          params_.tolerance);
       state.input = input;
     }
     return state.output;

@@ -42,6 +42,14 @@ struct ParameterRules {
                   std::string(field));
     }
   }
+  //! The `tolerance` option of the adaptive integration: 0 (off) or in [1e-14, 1] (below, rounding
+  //! errors exceed it and the step-size controller cannot meet it).
+  void integration_tolerance(double value) const {
+    at_least(value, 0.0, "tolerance", "tolerance");
+    if (value != 0.0 && (value < 1e-14 || value > 1.0)) {
+      fail("tolerance", "tolerance", value, "must be 0 (fixed RK4 sub-steps) or in [1e-14, 1]");
+    }
+  }
 };
 
 }  // namespace hyst::detail
