@@ -106,8 +106,17 @@ void BM_JilesAthertonLoop129(benchmark::State& bench) {
 }
 BENCHMARK(BM_JilesAthertonLoop129)->Arg(0)->Arg(1);
 
-void BM_BoucWen20Substeps(benchmark::State& bench) {
+// n = 1 (the default): the exact per-sample solution.
+void BM_BoucWenExact(benchmark::State& bench) {
   run(bench, hyst::BoucWen(hyst::BoucWen::Params{}), random_walk(kSamples, 1.0));
+}
+BENCHMARK(BM_BoucWenExact);
+
+// n = 1.5: classical RK4, 20 sub-steps per sample.
+void BM_BoucWen20Substeps(benchmark::State& bench) {
+  hyst::BoucWen::Params p;
+  p.n = 1.5;
+  run(bench, hyst::BoucWen(p), random_walk(kSamples, 1.0));
 }
 BENCHMARK(BM_BoucWen20Substeps);
 
