@@ -141,7 +141,7 @@ INSTANTIATE_TEST_SUITE_P(AllVersions, MatFileVersions,
                            return info.param == MatVersion::v5 ? "v5" : "v73";
                          });
 
-TEST_F(MatFile, ConvertsNumericClassesToDouble) {
+TEST_F(MatFile, ReadsNumericClassesAsDouble) {
   const fs::path path = file("classes.mat");
   mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5);
   ASSERT_NE(mat, nullptr);
