@@ -1,10 +1,15 @@
 #include "mat_sizes.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,24 +19,146 @@ namespace hyst::io::detail {
 namespace {
 
 constexpr std::uint64_t kHeaderBytes = 128;
-constexpr std::uint32_t kMatrix = 14;     // miMATRIX: sub-elements follow
-constexpr int kMatrixHeaderElements = 3;  // array flags, dimensions, name
-constexpr int kMaxNesting = 32;           // cells of cells of ...: deeper is not a real file
+constexpr std::uint32_t kInt8 = 1;         // miINT8: the name
+constexpr std::uint32_t kInt32 = 5;        // miINT32: the dimensions
+constexpr std::uint32_t kUint32 = 6;       // miUINT32: the array flags
+constexpr std::uint32_t kMatrix = 14;      // miMATRIX: sub-elements follow
+constexpr std::uint32_t kCompressed = 15;  // miCOMPRESSED: a zlib stream of one element
+constexpr int kMaxNesting = 32;            // cells of cells of ...: deeper is not a real file
 
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw Error(fmt::format("{}: not a valid MAT file: {}", path.string(), what));
+}
+
+std::uint32_t decode_u32(const unsigned char* b, bool swap) {
+  return swap ? (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 |
+                 b[3])
+              : (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[1]} << 8 |
+                 b[0]);
+}
+
+//! The file itself, read anywhere.
+class FileBytes {
+ public:
+  FileBytes(std::ifstream& in, const std::filesystem::path& path) : in_(in), path_(path) {}
+
+  void read(std::uint64_t position, unsigned char* out, std::size_t count) {
+    in_.seekg(static_cast<std::streamoff>(position));
+    in_.read(reinterpret_cast<char*>(out), static_cast<std::streamsize>(count));
+    if (!in_) fail(path_, fmt::format("cannot read byte {}", position));
+  }
+
+ private:
+  std::ifstream& in_;
+  const std::filesystem::path& path_;
+};
+
+//! The zlib stream of a compressed element, inflated on demand. Reads must go forward (the walk
+//! does), so nothing but a 64 kB window is kept, whatever the stream inflates to.
+class InflatedBytes {
+ public:
+  InflatedBytes(FileBytes& file, std::uint64_t begin, std::uint64_t bytes,
+                const std::filesystem::path& path, std::uint64_t element)
+      : file_(file), next_in_(begin), in_left_(bytes), path_(path), element_(element) {
+    if (inflateInit(&stream_) != Z_OK) fail(path_, "zlib cannot start");
+  }
+  ~InflatedBytes() { inflateEnd(&stream_); }
+  InflatedBytes(const InflatedBytes&) = delete;
+  InflatedBytes& operator=(const InflatedBytes&) = delete;
+
+  //! Inflates the rest of the stream and returns its total size.
+  std::uint64_t size() {
+    while (more()) {
+    }
+    return window_begin_ + window_.size();
+  }
+
+  void read(std::uint64_t position, unsigned char* out, std::size_t count) {
+    if (position < window_begin_) fail(path_, "compressed element read backwards");
+    while (position + count > window_begin_ + window_.size()) {
+      if (!more()) {
+        fail(path_, fmt::format("the compressed element at byte {} inflates to fewer than {} bytes",
+                                element_, position + count));
+      }
+    }
+    std::copy_n(window_.begin() + static_cast<std::ptrdiff_t>(position - window_begin_), count,
+                out);
+  }
+
+ private:
+  //! Inflates the next chunk into the window, dropping what lies before the last 8 bytes.
+  bool more() {
+    if (finished_) return false;
+    if (window_.size() > 8) {
+      const auto drop = window_.size() - 8;
+      window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(drop));
+      window_begin_ += drop;
+    }
+    unsigned char output[1 << 16];
+    stream_.next_out = output;
+    stream_.avail_out = sizeof output;
+    while (stream_.avail_out == sizeof output) {
+      if (stream_.avail_in == 0 && in_left_ > 0) {
+        const auto chunk =
+            static_cast<std::size_t>(std::min<std::uint64_t>(in_left_, sizeof input_));
+        file_.read(next_in_, input_, chunk);
+        next_in_ += chunk;
+        in_left_ -= chunk;
+        stream_.next_in = input_;
+        stream_.avail_in = static_cast<uInt>(chunk);
+      }
+      const int status = inflate(&stream_, Z_NO_FLUSH);
+      if (status == Z_STREAM_END) {
+        finished_ = true;
+        break;
+      }
+      if (status == Z_BUF_ERROR && stream_.avail_in == 0 && in_left_ == 0) {
+        fail(path_, fmt::format("the compressed element at byte {} is cut", element_));
+      }
+      if (status != Z_OK) {
+        fail(path_,
+             fmt::format("the compressed element at byte {} is not valid zlib data", element_));
+      }
+    }
+    window_.insert(window_.end(), output, stream_.next_out);
+    return true;
+  }
+
+  FileBytes& file_;
+  std::uint64_t next_in_;
+  std::uint64_t in_left_;
+  const std::filesystem::path& path_;
+  std::uint64_t element_;
+  z_stream stream_{};
+  unsigned char input_[1 << 16] = {};
+  std::vector<unsigned char> window_;
+  std::uint64_t window_begin_ = 0;
+  bool finished_ = false;
+};
+
+//! Checks the elements of a v5 file (or of one inflated compressed element) against the bytes
+//! that contain them. Reads go forward only, so that a compressed element need not be inflated in
+//! memory.
+template <class Bytes>
 class V5Walker {
  public:
-  V5Walker(std::ifstream& in, const std::filesystem::path& path, bool swap)
-      : in_(in), path_(path), swap_(swap) {}
+  //! `where` starts each message ("" for the file, "in the compressed element at byte 128, "
+  //! for the element inflated from it: positions then count from the inflated element's start).
+  V5Walker(Bytes& bytes, const std::filesystem::path& path, bool swap, std::string where = {})
+      : bytes_(bytes), path_(path), swap_(swap), where_(std::move(where)) {}
 
-  //! The elements in [begin, end), each fitting inside it; sub-elements of matrices too.
-  //! Returns the number of elements found.
-  int walk(std::uint64_t begin, std::uint64_t end, int depth, bool top_level) {
+  //! The elements in [begin, end), each fitting inside it; sub-elements of matrices too. Returns
+  //! the number of elements found. `on_compressed(position, bytes)` handles a compressed element.
+  template <class OnCompressed>
+  int walk(std::uint64_t begin, std::uint64_t end, int depth, bool top_level,
+           OnCompressed&& on_compressed, std::uint64_t matrix = kNoMatrix) {
     if (depth > kMaxNesting) fail("matrices nested too deep");
     int count = 0;
     std::uint64_t position = begin;
     while (position + 8 <= end) {
       const std::uint32_t type = read_u32(position);
       const std::uint32_t bytes = read_u32(position + 4);
+      if (matrix != kNoMatrix) check_matrix_header(matrix, count, position, type, bytes);
       ++count;
       if ((type >> 16) != 0) {  // small element: type and size in 4 bytes, data in the other 4
         position += 8;
@@ -42,13 +169,15 @@ class V5Walker {
         fail(fmt::format("the element at byte {} claims {} bytes but {} has {} left", position,
                          bytes, top_level ? "the file" : "its container", left));
       }
-      // A matrix starts with its flags, dimensions and name (an empty one has no bytes at all);
-      // matio reads those three even when they lie beyond the matrix.
+      // An empty matrix has no bytes at all; any other starts with three header elements, which
+      // matio reads even when they lie beyond the matrix.
       if (type == kMatrix && bytes > 0 &&
-          walk(position + 8, position + 8 + bytes, depth + 1, false) < kMatrixHeaderElements) {
+          walk(position + 8, position + 8 + bytes, depth + 1, false, on_compressed, position) <
+              kMatrixHeaderElements) {
         fail(fmt::format("the matrix at byte {} ({} bytes) is too short for its header", position,
                          bytes));
       }
+      if (type == kCompressed && top_level) on_compressed(position, bytes);
       // Sub-elements are padded to 8 bytes; top-level ones (compressed ones) need not be.
       const std::uint64_t padded = top_level ? bytes : (bytes + 7) / 8 * 8;
       position += 8 + padded;
@@ -57,25 +186,64 @@ class V5Walker {
   }
 
  private:
-  std::uint32_t read_u32(std::uint64_t position) {
-    unsigned char b[4] = {};
-    in_.seekg(static_cast<std::streamoff>(position));
-    in_.read(reinterpret_cast<char*>(b), 4);
-    if (!in_) fail(fmt::format("cannot read byte {}", position));
-    return swap_ ? (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 |
-                    std::uint32_t{b[2]} << 8 | b[3])
-                 : (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 |
-                    std::uint32_t{b[1]} << 8 | b[0]);
+  static constexpr std::uint64_t kNoMatrix = ~std::uint64_t{0};
+  static constexpr int kMatrixHeaderElements = 3;
+
+  //! Element `index` of the matrix at `matrix`: the array flags, dimensions and name must be what
+  //! the format defines. matio reads them at fixed places whatever their tags say, so a
+  //! dimensions element of, say, 1 byte (rank 0, no padding for matio) would shift the name tag
+  //! matio reads off the one walked here.
+  void check_matrix_header(std::uint64_t matrix, int index, std::uint64_t position,
+                           std::uint32_t type, std::uint32_t bytes) const {
+    if (index == 0 && (type != kUint32 || bytes != 8)) {
+      fail(fmt::format("the matrix at byte {} does not start with 8 bytes of array flags", matrix));
+    }
+    if (index == 1 && (type != kInt32 || bytes < 8 || bytes % 4 != 0)) {
+      fail(
+          fmt::format("the matrix at byte {} has no valid dimensions (int32, at least "
+                      "2 of them) at byte {}",
+                      matrix, position));
+    }
+    if (index == 2 && (type & 0xffff) != kInt8) {
+      fail(fmt::format("the matrix at byte {} has no name (int8 characters) at byte {}", matrix,
+                       position));
+    }
   }
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw Error(fmt::format("{}: not a valid MAT file: {}", path_.string(), what));
+    hyst::io::detail::fail(path_, where_ + what);
   }
 
-  std::ifstream& in_;
+  std::uint32_t read_u32(std::uint64_t position) {
+    unsigned char b[4];
+    bytes_.read(position, b, 4);
+    return decode_u32(b, swap_);
+  }
+
+  Bytes& bytes_;
   const std::filesystem::path& path_;
   bool swap_;
+  std::string where_;
 };
+
+//! The whole v5 file: its elements, and the element inside every compressed one.
+void check_v5(std::ifstream& in, const std::filesystem::path& path, std::uint64_t size, bool swap) {
+  FileBytes file(in, path);
+  const auto no_nested_compression = [&](std::uint64_t position, std::uint32_t) {
+    fail(path, fmt::format("a compressed element inside a compressed element (in the one at byte "
+                           "{})",
+                           position));
+  };
+  V5Walker<FileBytes>(file, path, swap)
+      .walk(kHeaderBytes, size, 0, true, [&](std::uint64_t position, std::uint32_t bytes) {
+        const std::uint64_t inflated_size =
+            InflatedBytes(file, position + 8, bytes, path, position).size();
+        InflatedBytes inflated(file, position + 8, bytes, path, position);
+        V5Walker<InflatedBytes>(inflated, path, swap,
+                                fmt::format("in the compressed element at byte {}, ", position))
+            .walk(0, inflated_size, 0, true, no_nested_compression);
+      });
+}
 
 constexpr std::string_view kNoV4Type = "no v4 type at the start";
 
@@ -89,13 +257,7 @@ std::string v4_problem(std::ifstream& in, std::uint64_t size) {
     in.seekg(static_cast<std::streamoff>(position));
     in.read(reinterpret_cast<char*>(raw), 20);
     if (!in) return fmt::format("cannot read byte {}", position);
-    const auto word = [&](int k, bool big) {
-      const unsigned char* b = raw + 4 * k;
-      return big ? (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 |
-                    std::uint32_t{b[2]} << 8 | b[3])
-                 : (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 |
-                    std::uint32_t{b[1]} << 8 | b[0]);
-    };
+    const auto word = [&](int k, bool big) { return decode_u32(raw + 4 * k, big); };
     // type = 1000 M + 100 O + 10 P + T: machine 0..4, O = 0, precision 0..5, kind 0..2; its
     // machine digit gives the byte order the type itself is written in.
     const auto valid_type = [](std::uint32_t type) {
@@ -152,7 +314,7 @@ void check_mat_sizes(const std::filesystem::path& path) {
     const auto first = static_cast<unsigned char>(header[little ? 125 : 124]);
     const auto second = static_cast<unsigned char>(header[little ? 124 : 125]);
     if (first == 0x01 && second == 0x00) {
-      V5Walker(in, path, big).walk(kHeaderBytes, size, 0, true);
+      check_v5(in, path, size, big);
       return;
     }
   }

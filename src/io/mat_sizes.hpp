@@ -2,9 +2,10 @@
 // A check of the sizes a MATLAB file states, before matio reads it. matio trusts them: a corrupt
 // 250-byte file whose dimensions element claims 1.4 GB makes it allocate 2.8 GB, and a file that
 // is neither v5 nor HDF5 is tried as v4, whose first record may claim a 1.7 GB name (both found by
-// fuzz/fuzz_mat_file). Here, in a v5 file every top-level element, and every sub-element of an
-// uncompressed matrix (recursively), must fit inside what contains it; in a v4 file every record
-// (header, name, data) must fit inside the file.
+// fuzz/fuzz_mat_file). Here, in a v5 file every top-level element, every sub-element of a matrix
+// (recursively) and every element inside a compressed one (inflated on the fly) must fit inside
+// what contains it, and each matrix must start with array flags, dimensions and a name as the
+// format defines; in a v4 file every record (header, name, data) must fit inside the file.
 
 #include <filesystem>
 

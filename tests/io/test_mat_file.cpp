@@ -3,6 +3,7 @@
 #include <matio.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <bit>
@@ -352,6 +353,99 @@ TEST_F(MatFile, RejectsSizesLargerThanTheFile) {
   EXPECT_HYST_ERROR(list_mat_variables(v5),
                     "not a valid MAT file: the element at byte 152 claims 1413565704 bytes but "
                     "its container has 56 left");
+}
+
+// v5 files built byte by byte (little-endian): a 128-byte header, then elements.
+std::string le32(std::uint32_t value) {
+  std::string bytes(4, '\0');
+  for (int k = 0; k < 4; ++k)
+    bytes[k] = static_cast<char>((value >> (8 * k)) & 0xff);
+  return bytes;
+}
+std::string element(std::uint32_t type, const std::string& data) {
+  std::string padded = data;
+  padded.resize((data.size() + 7) / 8 * 8, '\0');
+  return le32(type) + le32(static_cast<std::uint32_t>(data.size())) + padded;
+}
+// A 1 x 1 double matrix named `name`, its dimensions element `dimensions` as given.
+std::string scalar_matrix(const std::string& dimensions, const std::string& name) {
+  const double value = 0.5;
+  const std::string flags = element(6, le32(6) + le32(0));  // miUINT32; class double
+  const std::string data = element(9, std::string(reinterpret_cast<const char*>(&value), 8));
+  return element(14, flags + dimensions + name + data);
+}
+void write_v5(const fs::path& path, const std::string& elements) {
+  std::string header(116, ' ');
+  header.replace(0, 19, "MATLAB 5.0 MAT-file");
+  header += std::string(8, '\0') + std::string("\x00\x01IM", 4);  // version 0x0100
+  std::ofstream(path, std::ios::binary) << header << elements;
+}
+std::string deflated(const std::string& bytes) {
+  uLongf size = compressBound(bytes.size());
+  std::string out(size, '\0');
+  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(out.data()), &size,
+                     reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()),
+            Z_OK);
+  out.resize(size);
+  return le32(15) + le32(static_cast<std::uint32_t>(out.size())) + out;  // miCOMPRESSED
+}
+
+// The three header elements of a matrix must be what the format defines: matio reads them at
+// fixed places whatever their tags say (input found by fuzz/fuzz_mat_file: a 1-byte dimensions
+// element, read by matio as rank 0 with no padding, so that it took the next 8 bytes as a name tag
+// claiming 1.98 GB and allocated that).
+TEST_F(MatFile, RejectsMatrixHeadersOtherThanTheFormatDefines) {
+  const std::string dimensions = element(5, le32(1) + le32(1));  // miINT32, 1 x 1
+  const std::string name = element(1, "v");
+  const fs::path good = file("good.mat");
+  write_v5(good, scalar_matrix(dimensions, name));
+  EXPECT_EQ(read_mat_vector(good, "v"), std::vector<double>{0.5});
+
+  const fs::path one_byte = file("one_byte_dimensions.mat");
+  write_v5(one_byte, scalar_matrix(element(5, "\x01"), name));
+  EXPECT_HYST_ERROR(list_mat_variables(one_byte),
+                    "not a valid MAT file: the matrix at byte 128 has no valid dimensions (int32, "
+                    "at least 2 of them) at byte 152");
+  const fs::path no_flags = file("no_flags.mat");
+  write_v5(no_flags, element(14, dimensions + dimensions + name));
+  EXPECT_HYST_ERROR(list_mat_variables(no_flags),
+                    "not a valid MAT file: the matrix at byte 128 does not start with 8 bytes of "
+                    "array flags");
+  const fs::path no_name = file("no_name.mat");
+  write_v5(no_name, scalar_matrix(dimensions, element(9, "v")));
+  EXPECT_HYST_ERROR(list_mat_variables(no_name),
+                    "not a valid MAT file: the matrix at byte 128 has no name (int8 characters) at "
+                    "byte 168");
+}
+
+// A compressed element is inflated and checked like the file: a few bytes of zlib data can
+// claim gigabytes.
+TEST_F(MatFile, ChecksTheElementInsideACompressedOne) {
+  const std::string dimensions = element(5, le32(1) + le32(1));
+  const fs::path good = file("good_compressed.mat");
+  write_v5(good, deflated(scalar_matrix(dimensions, element(1, "v"))));
+  EXPECT_EQ(read_mat_vector(good, "v"), std::vector<double>{0.5});
+
+  // The name tag claims 0x76000000 bytes; the matrix holds 56 after the name tag.
+  const std::string huge_name = le32(1) + le32(0x76000000) + std::string(8, 'v');
+  const fs::path bomb = file("huge_name_compressed.mat");
+  write_v5(bomb, deflated(scalar_matrix(dimensions, huge_name)));
+  EXPECT_HYST_ERROR(list_mat_variables(bomb),
+                    "not a valid MAT file: in the compressed element at byte 128, the element at "
+                    "byte 40 claims 1979711488 bytes but its container has 24 left");
+
+  const std::string compressed = deflated(scalar_matrix(dimensions, element(1, "v")));
+  const fs::path cut = file("cut_compressed.mat");
+  std::string cut_element = compressed.substr(0, compressed.size() - 6);
+  cut_element.replace(4, 4, le32(static_cast<std::uint32_t>(cut_element.size() - 8)));
+  write_v5(cut, cut_element);
+  EXPECT_HYST_ERROR(list_mat_variables(cut),
+                    "not a valid MAT file: the compressed element at byte 128 is cut");
+  const fs::path garbage = file("garbage_compressed.mat");
+  write_v5(garbage, le32(15) + le32(16) + std::string(16, '\x55'));
+  EXPECT_HYST_ERROR(list_mat_variables(garbage),
+                    "not a valid MAT file: the compressed element at byte 128 is not valid zlib "
+                    "data");
 }
 
 }  // namespace

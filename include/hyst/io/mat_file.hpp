@@ -17,6 +17,11 @@
 //! writes a temporary file in the same folder (".<name>.tmp.<pid>.<counter>"), which is flushed to
 //! disk and renamed over the target, so a reader never sees a partial file. v7.3 files are HDF5
 //! files (MATLAB's format for variables over 2 GB); v5 is read by every MATLAB, Octave and SciPy.
+//!
+//! Reading checks every size a v4/v5 file states (compressed elements are inflated to check what
+//! they hold) before matio trusts it. v7.3 files are parsed by HDF5, whose parser is not hardened
+//! against corrupt files (a fuzzer makes it ask for 2^64 bytes within a minute) and which hyst
+//! cannot check beforehand: read v7.3 files only from sources you trust.
 
 #include <filesystem>
 #include <string>
