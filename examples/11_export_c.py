@@ -48,8 +48,9 @@ if not path.exists():
 # 1. Fit (as example 08).
 table = hyst.io.read_aixacct(path).measurement(6)
 voltage, polarisation = table.column("V+"), table.column("P1")
+# A lower bound on p_0 keeps the inverse well conditioned (its first weight is 1 / p_0).
 model, report = hyst.fit("pi", voltage, polarisation, detrend=True, resample="input-grid",
-                         operators=12, initial_state="periodic")
+                         operators=12, initial_state="periodic", min_linear_weight=1e-3)
 print(report.brief())
 
 with tempfile.TemporaryDirectory() as folder:
@@ -82,6 +83,8 @@ print(f"C vs library: max |voltage difference| {voltage_difference:.3g} V, "
       f"max |response difference| {response_difference:.3g} uC/cm2")
 print(f"C controller: max |model response - desired| {tracking_error:.3g} uC/cm2 over "
       f"{len(desired)} samples (range {high - low:.3g} uC/cm2)")
-ok = (voltage_difference <= 1e-9 and response_difference <= 1e-9
-      and tracking_error <= 1e-9 * (high - low))
+# Rounding only: the sums run in another order in the library (vectorised) than in the C code.
+voltage_span = float(np.max(voltage) - np.min(voltage))
+ok = (voltage_difference <= 1e-11 * voltage_span and response_difference <= 1e-11 * (high - low)
+      and tracking_error <= 1e-11 * (high - low))
 sys.exit(0 if ok else 1)
