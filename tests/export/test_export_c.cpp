@@ -18,6 +18,7 @@
 #include "../support/expect_error.hpp"
 #include "../support/temp_folder_test.hpp"
 #include "hyst/export/export_c.hpp"
+#include "hyst/models/preisach.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -107,6 +108,7 @@ struct Case {
   double low = -1.0;        // input range of the test signal
   double high = 1.0;
   std::size_t warm_up = 300;  // library samples before the export: a state that is not the default
+  std::vector<double> input{};  // the test input and the source of the targets; empty = seeded
 };
 
 class ExportCTest : public test::TempFolderTest {
@@ -144,10 +146,11 @@ class ExportCTest : public test::TempFolderTest {
     std::vector<double> ignored(warm.size());
     model->simulate(warm, ignored);  // the exported state is this one, not the default
 
-    const auto input = seeded_input(11, c.low, c.high, 3000);
+    const auto input = c.input.empty() ? seeded_input(11, c.low, c.high, 3000) : c.input;
     // Reachable targets: the library's own output for another input.
     std::vector<double> target(input.size());
-    model->clone()->simulate(seeded_input(13, c.low, c.high, input.size()), target);
+    model->clone()->simulate(
+        c.input.empty() ? seeded_input(13, c.low, c.high, input.size()) : c.input, target);
 
     CExportOptions options;
     options.prefix = "exported";
@@ -242,6 +245,17 @@ nlohmann::json model_document(std::string_view name, nlohmann::json params) {
   return {{"model", name}, {"version", 1}, {"params", std::move(params)}};
 }
 
+// The relay-grid parameters of a Preisach model document.
+Preisach::Params preisach_params_of(const nlohmann::json& document) {
+  const auto& p = document.at("params");
+  Preisach::Params params;
+  params.everett.levels = p.at("levels").get<std::size_t>();
+  params.everett.lower = p.at("lower").get<double>();
+  params.everett.upper = p.at("upper").get<double>();
+  params.everett.weights = p.at("weights").get<std::vector<double>>();
+  return params;
+}
+
 nlohmann::json example_document(std::string_view name) {
   return model_document(name, ModelRegistry::builtin().find(name).example_params);
 }
@@ -298,6 +312,25 @@ TEST_F(ExportCTest, PreisachAndItsNumericalInverse) {
   // float rounding of a level may switch one relay more or less; and the inverse answers with a
   // float input. The bound is one relay weight (< 1) relative to the output scale (F0 ~ 33).
   check_everything(c, 0.04);
+}
+
+TEST_F(ExportCTest, PreisachMemoryOverflowDropsTheSamePairs) {
+  // 400 loops nested in one another (ever-shrinking oscillations) overflow the 256-pair memory:
+  // the C code must drop the same innermost pairs as the library.
+  std::vector<double> input;
+  for (int k = 0; k < 800; ++k)
+    input.push_back((k % 2 == 0 ? 1.0 : -1.0) * (0.95 - 0.001 * k));
+  Case c{model_document("preisach", {{"levels", 41},
+                                     {"lower", -1.0},
+                                     {"upper", 1.0},
+                                     {"weights", std::vector<double>(861, 1.0)}}),
+         -1.0, 1.0, 0, input};
+  Preisach preisach(preisach_params_of(c.document));
+  auto state = preisach.initial_state();
+  for (const double v : input)
+    preisach.step(state, v);
+  ASSERT_GT(state.truncations, 0U);  // the input does overflow the library's memory
+  compare(c, CScalar::double_precision, "-O2", 1e-12);
 }
 
 TEST_F(ExportCTest, BoucWenRk4AndExactSolution) {
