@@ -116,9 +116,9 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
       " *\n"
       "{}"
       " *\n"
-      " * Scalar type: {}. Plain C99: no heap, no library beyond <math.h>, no recursion, every "
-      "loop\n"
-      " * bounded by a size fixed at export time, tables const.\n"
+      " * Scalar type: {}.\n"
+      " * Plain C99: no heap, no library beyond <math.h>, no recursion, every loop bounded by a\n"
+      " * size fixed at export time, tables const.\n"
       " */\n",
       code.title, origin, writer.prefix(), writer.single() ? " --float" : "", code.description,
       writer.single() ? "float (every operation in single precision)"
