@@ -28,16 +28,6 @@ typedef struct {
   @_real input;
   @_real z;
 } @_state;
-
-/* The fitted parameters. */
-extern const @_params @_PARAMS;
-
-/* The state stored in the model file. */
-void @_init(@_state *state);
-/* The model's default initial state (x = 0, z = 0). */
-void @_reset(@_state *state);
-/* One sample (input linear between samples): advances z and returns F. */
-@_real @_step(const @_params *params, @_state *state, @_real input);
 )";
 
 constexpr std::string_view kRk4Fields =
@@ -159,7 +149,9 @@ CModelCode emit_bouc_wen_c(const DynamicModel& model, const CWriter& writer,
             : fmt::format("classical RK4 with max({}, ceil(|dx| / {})) equal steps per sample, "
                           "at most 1000000",
                           p.substeps, writer.number(max_step)));
-  code.header = CWriter::fill(kHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}});
+  code.header = CWriter::fill(kHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}}) +
+                c_model_declarations("x = 0, z = 0",
+                                     "input linear between samples; advances z and returns F.");
   const std::string rk4_values =
       exact ? "" : fmt::format(",\n    {}u, {}", p.substeps, writer.number(max_step));
   const auto state = model.state();

@@ -92,17 +92,7 @@ typedef struct {
 typedef struct {
   @_real play[@_OPERATORS];
 } @_state;
-
-/* The fitted parameters. */
-extern const @_params @_PARAMS;
-
-/* The state stored in the model file. */
-void @_init(@_state *state);
-/* The model's default initial state (at rest at its initial input, arrived rising). */
-void @_reset(@_state *state);
-/* One sample: both envelopes, every operator, the weighted sum. */
-@_real @_step(const @_params *params, @_state *state, @_real input);
-
+%MODEL_DECLARATIONS%
 /* Inverse parameters: the inverse PI of the classical PI with the same thresholds and weights
    (thresholds rh_j, weights ph_j), the envelopes to invert, and the input limits. */
 typedef struct {
@@ -120,17 +110,7 @@ typedef struct {
   @_real u;
   int ascending; /* 1: u last rose (invert gamma_l), 0: it fell (invert gamma_r) */
 } @_inverse_state;
-
-/* The inverse's parameters, computed by the library from the fitted ones. */
-extern const @_inverse_params @_INVERSE_PARAMS;
-
-/* Inverse in the state consistent with the model file's state (as `hyst invert` starts it). */
-void @_inverse_init(@_inverse_state *state);
-/* Inverse in the state consistent with the model's default initial state. */
-void @_inverse_reset(@_inverse_state *state);
-/* The input that makes the model produce `target`; advances the inverse's state. */
-@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
-)";
+%INVERSE_DECLARATIONS%)";
 
 constexpr std::string_view kFunctions = R"(
 void @_init(@_state *state) {
@@ -211,9 +191,14 @@ CModelCode emit(const DynamicModel& model, const GpiParams& params, const CWrite
       "gamma_r^-1(u)\n"
       " * while it falls (include/hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = true;
-  code.header = CWriter::fill(kHeader, {{"N", std::to_string(gpi.size())},
-                                        {"K", std::to_string(E::coefficient_count)},
-                                        {"KIND", std::string(to_string(params.envelope))}});
+  code.header = CWriter::fill(
+      kHeader, {{"N", std::to_string(gpi.size())},
+                {"K", std::to_string(E::coefficient_count)},
+                {"KIND", std::string(to_string(params.envelope))},
+                {"MODEL_DECLARATIONS",
+                 c_model_declarations("at rest at its initial input, arrived rising",
+                                      "both envelopes, every operator, the weighted sum.")},
+                {"INVERSE_DECLARATIONS", c_inverse_declarations("")}});
   const std::string saturation =
       params.envelope == EnvelopeKind::linear
           ? std::string()

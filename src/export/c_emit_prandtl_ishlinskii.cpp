@@ -22,41 +22,30 @@ static void @_copy_play(@_real *play, const @_real *from) {
 
 )";
 
-// The forward declarations both models share (after their own @_params struct).
-constexpr std::string_view kModelHeader = R"(
+// The state type both models share (after their own @_params struct).
+constexpr std::string_view kStateType = R"(
 /* State: the play outputs w_j [input units]. */
 typedef struct {
   @_real play[@_OPERATORS];
 } @_state;
-
-/* The fitted parameters. */
-extern const @_params @_PARAMS;
-
-/* The state stored in the model file. */
-void @_init(@_state *state);
-/* The model's default initial state (every w_j = 0). */
-void @_reset(@_state *state);
-/* One sample: updates every play and returns the output. */
-@_real @_step(const @_params *params, @_state *state, @_real input);
 )";
 
-// The inverse declarations both models share (after their own @_inverse_params struct).
-constexpr std::string_view kInverseHeader = R"(
+// The inverse state type both models share (after their own @_inverse_params struct).
+constexpr std::string_view kInverseStateType = R"(
 /* State of the inverse: its play outputs wh_j [output units]. */
 typedef struct {
   @_real play[@_OPERATORS];
 } @_inverse_state;
-
-/* The inverse's parameters, computed by the library from the fitted ones. */
-extern const @_inverse_params @_INVERSE_PARAMS;
-
-/* Inverse in the state consistent with the model file's state (as `hyst invert` starts it). */
-void @_inverse_init(@_inverse_state *state);
-/* Inverse in the state consistent with the model's default initial state. */
-void @_inverse_reset(@_inverse_state *state);
-/* The input that makes the model produce `target`; advances the inverse's state. */
-@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
 )";
+
+std::string model_declarations() {
+  return std::string(kStateType) +
+         c_model_declarations("every w_j = 0", "updates every play and returns the output.");
+}
+
+std::string inverse_declarations() {
+  return std::string(kInverseStateType) + c_inverse_declarations("");
+}
 
 constexpr std::string_view kClampFunction =
     R"(/* The inverse's input limits (the library's below_range / above_range answers). */
@@ -142,7 +131,7 @@ typedef struct {
 } @_params;
 )",
                               {{"N", std::to_string(pi.size())}}) +
-                std::string(kModelHeader);
+                model_declarations();
   code.source = std::string(c_play_functions()) + std::string(kCopyFunction) +
                 CWriter::fill("const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %OFF%};\n\n",
                               {{"R", writer.table(p.thresholds)},
@@ -168,7 +157,7 @@ typedef struct {
   @_real input_max;
   @_real offset;                  /* y_off */
 } @_inverse_params;
-)" + std::string(kInverseHeader);
+)" + inverse_declarations();
   code.source += "\n" + std::string(kClampFunction) +
                  CWriter::fill(
                      "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n"
@@ -220,7 +209,7 @@ typedef struct {
 )",
                               {{"N", std::to_string(mpi.hysteresis().size())},
                                {"D", std::to_string(mpi.dead_zone().size())}}) +
-                std::string(kModelHeader);
+                model_declarations();
   code.source =
       std::string(c_play_functions()) + std::string(kCopyFunction) +
       std::string(kDeadZoneFunction) +
@@ -260,7 +249,7 @@ typedef struct {
   @_real input_min;                          /* admissible input range [input units] */
   @_real input_max;
 } @_inverse_params;
-)" + std::string(kInverseHeader);
+)" + inverse_declarations();
   code.source +=
       "\n" + std::string(kClampFunction) +
       CWriter::fill(

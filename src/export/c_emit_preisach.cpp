@@ -46,17 +46,7 @@ typedef struct {
   @_real input;
   unsigned long truncations;
 } @_state;
-
-/* The fitted parameters. */
-extern const @_params @_PARAMS;
-
-/* The state stored in the model file. */
-void @_init(@_state *state);
-/* The model's default initial state (%INITIAL%). */
-void @_reset(@_state *state);
-/* One sample: updates the memory and returns y; O(1) + O(wiped pairs). */
-@_real @_step(const @_params *params, @_state *state, @_real input);
-
+%MODEL_DECLARATIONS%
 /* Inverse parameters: the model, the admissible input range, the search tolerances and the
    most search steps per sample. */
 typedef struct {
@@ -70,18 +60,7 @@ typedef struct {
 
 /* The inverse's state is the model's state. */
 typedef @_state @_inverse_state;
-
-/* The inverse's parameters. */
-extern const @_inverse_params @_INVERSE_PARAMS;
-
-/* Inverse in the model file's state (as `hyst invert` starts it). */
-void @_inverse_init(@_inverse_state *state);
-/* Inverse in the model's default initial state. */
-void @_inverse_reset(@_inverse_state *state);
-/* The input that makes the model produce `target` (bracketed search on the model's output one
-   step ahead, Chandrupatla's method); the state advances with it. */
-@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
-)";
+%INVERSE_DECLARATIONS%)";
 
 constexpr std::string_view kModelFunctions = R"(
 /* A level index near u for c_0 < u < c_{N-1}; the callers correct it by single steps. */
@@ -423,7 +402,12 @@ CModelCode emit_preisach_c(const DynamicModel& model, const CWriter& writer,
       kHeader, {{"N", std::to_string(n)},
                 {"TABLE", std::to_string(table.size())},
                 {"PAIRS", std::to_string(PreisachState::max_pairs)},
-                {"INITIAL", std::string(to_string(preisach.params().initial_state))}});
+                {"MODEL_DECLARATIONS",
+                 c_model_declarations(to_string(preisach.params().initial_state),
+                                      "updates the memory and returns y; O(1) + O(wiped pairs).")},
+                {"INVERSE_DECLARATIONS",
+                 c_inverse_declarations(" (bracketed search on the model's output one step "
+                                        "ahead, Chandrupatla's method)")}});
   code.source = fmt::format(
       "const @_params @_PARAMS = {{\n    {},\n    {},\n    {},\n    {}, {}, {}, {}, {}}};\n\n",
       writer.table(levels), writer.table(diagonal), writer.table(table),

@@ -101,6 +101,36 @@ static @_real @_play_sum(const @_real *thresholds, const @_real *weights, @_real
 )";
 }
 
+std::string c_model_declarations(std::string_view reset_note, std::string_view step_note) {
+  return CWriter::fill(R"(
+/* The fitted parameters. */
+extern const @_params @_PARAMS;
+
+/* The state stored in the model file. */
+void @_init(@_state *state);
+/* The model's default initial state (%RESET%). */
+void @_reset(@_state *state);
+/* One sample: %STEP% */
+@_real @_step(const @_params *params, @_state *state, @_real input);
+)",
+                       {{"RESET", std::string(reset_note)}, {"STEP", std::string(step_note)}});
+}
+
+std::string c_inverse_declarations(std::string_view step_note) {
+  return CWriter::fill(R"(
+/* The inverse's parameters, computed by the library from the fitted ones. */
+extern const @_inverse_params @_INVERSE_PARAMS;
+
+/* Inverse in the state consistent with the model file's state (as `hyst invert` starts it). */
+void @_inverse_init(@_inverse_state *state);
+/* Inverse in the state consistent with the model's default initial state. */
+void @_inverse_reset(@_inverse_state *state);
+/* The input that makes the model produce `target`%STEP%; advances the inverse's state. */
+@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
+)",
+                       {{"STEP", std::string(step_note)}});
+}
+
 CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
                        std::string_view source_file) {
   std::string guard;

@@ -53,6 +53,13 @@ class CWriter {
 //! n operators, the input clamp of the inverses); included once in a source file.
 std::string_view c_play_functions();
 
+//! The declarations every model shares, after its @_params and @_state types: the fitted
+//! parameters, init (the model file's state), reset (`reset_note`: the default initial state) and
+//! step (`step_note`: what one sample does).
+std::string c_model_declarations(std::string_view reset_note, std::string_view step_note);
+//! The same for an inverse, after its @_inverse_params and @_inverse_state types.
+std::string c_inverse_declarations(std::string_view step_note);
+
 //! The complete header and source for a model's code, with the preamble that names the model, the
 //! file it came from and the scalar type.
 CCode assemble_c_files(const CWriter& writer, const CModelCode& code, std::string_view source_file);
