@@ -340,6 +340,17 @@ TEST_F(ExportCTest, BoucWenRk4AndExactSolution) {
   check_everything({exact, -3.0, 3.0}, kFloatBound);
 }
 
+TEST_F(ExportCTest, NmListsTheMathFunctionsTheCodeCalls) {
+  // The symbol check of check_everything() reads nm's listing: it does see the calls there are.
+  const Case c{example_document("gpi")};
+  const auto in_double = undefined_symbols(c, CScalar::double_precision);
+  EXPECT_EQ(in_double.count("exp"), 1U);
+  EXPECT_EQ(in_double.count("atanh"), 1U);
+  const auto in_float = undefined_symbols(c, CScalar::single_precision);
+  EXPECT_EQ(in_float.count("expf"), 1U);
+  EXPECT_EQ(in_float.count("exp"), 0U);
+}
+
 TEST_F(ExportCTest, UnsupportedModelIsNamed) {
   auto model = model_from_json(example_document("kp"), "test");
   EXPECT_HYST_ERROR(generate_c(*model, {}), "'kp' is not supported");
