@@ -176,7 +176,8 @@ static @_plan @_make_plan(const @_state *state, @_real input) {
 }
 
 /* The output step() would return, without changing the state. */
-static @_real @_preview(const @_params *params, const @_state *state, @_real input) {
+static @_real @_preview(const @_params *restrict params, const @_state *restrict state,
+                        @_real input) {
   @_plan plan;
   unsigned int top;
   @_real sum;
@@ -196,7 +197,7 @@ static @_real @_preview(const @_params *params, const @_state *state, @_real inp
          #(2.0) * (sum + @_current_term(params, @_is_minimum(state, top), top_value, input));
 }
 
-@_real @_step(const @_params *params, @_state *state, @_real input) {
+@_real @_step(const @_params *restrict params, @_state *restrict state, @_real input) {
   @_plan plan;
   unsigned int top;
   if (input < params->lower) {
