@@ -13,8 +13,24 @@
 namespace hyst::detail {
 namespace {
 
-// The envelope gamma(v) and its inverse for each kind, as in envelopes.hpp. The saturation limit
-// of the inverse is emitted as @_SATURATION.
+// The inverse of a saturating envelope c0 F(c1 v + c2) + c3 (F = tanh or atan, INVERSE = its
+// inverse function), as in envelopes.hpp. The saturation limit is emitted as @_SATURATION.
+constexpr std::string_view kSaturatingInverse =
+    R"(/* v = (%INVERSE%((u - c3) / c0) - c2) / c1; beyond the range the %INVERSE% argument is clamped
+   to +-@_SATURATION (the library's below_range / above_range answer). */
+static @_real @_envelope_inverse(const @_real *c, @_real u) {
+  const @_real x = (u - c[3]) / c[0];
+  if (x > -@_SATURATION && x < @_SATURATION) return ($%INVERSE%(x) - c[2]) / c[1];
+  {
+    const int above = u > c[3];
+    const @_real clamped = above == (c[0] > #(0.0)) ? @_SATURATION : -@_SATURATION;
+    return ($%INVERSE%(clamped) - c[2]) / c[1];
+  }
+}
+
+)";
+
+// The envelope gamma(v) and its inverse for each kind, as in envelopes.hpp.
 std::string envelope_functions(EnvelopeKind kind) {
   switch (kind) {
     case EnvelopeKind::linear:
@@ -28,19 +44,7 @@ static @_real @_envelope_inverse(const @_real *c, @_real u) { return (u - c[1]) 
       return R"(/* gamma(v) = c0 atan(c1 v + c2) + c3. */
 static @_real @_envelope(const @_real *c, @_real v) { return c[0] * $atan(c[1] * v + c[2]) + c[3]; }
 
-/* v = (tan((u - c3) / c0) - c2) / c1; beyond the range the tan argument is clamped to
-   +-@_SATURATION (the library's below_range / above_range answer). */
-static @_real @_envelope_inverse(const @_real *c, @_real u) {
-  const @_real x = (u - c[3]) / c[0];
-  if (x > -@_SATURATION && x < @_SATURATION) return ($tan(x) - c[2]) / c[1];
-  {
-    const int above = u > c[3];
-    const @_real clamped = above == (c[0] > #(0.0)) ? @_SATURATION : -@_SATURATION;
-    return ($tan(clamped) - c[2]) / c[1];
-  }
-}
-
-)";
+)" + CWriter::fill(kSaturatingInverse, {{"INVERSE", "tan"}});
     case EnvelopeKind::tanh:
       break;
   }
@@ -54,19 +58,7 @@ static @_real @_tanh(@_real w) {
 /* gamma(v) = c0 tanh(c1 v + c2) + c3. */
 static @_real @_envelope(const @_real *c, @_real v) { return c[0] * @_tanh(c[1] * v + c[2]) + c[3]; }
 
-/* v = (atanh((u - c3) / c0) - c2) / c1; beyond the range the atanh argument is clamped to
-   +-@_SATURATION (the library's below_range / above_range answer). */
-static @_real @_envelope_inverse(const @_real *c, @_real u) {
-  const @_real x = (u - c[3]) / c[0];
-  if (x > -@_SATURATION && x < @_SATURATION) return ($atanh(x) - c[2]) / c[1];
-  {
-    const int above = u > c[3];
-    const @_real clamped = above == (c[0] > #(0.0)) ? @_SATURATION : -@_SATURATION;
-    return ($atanh(clamped) - c[2]) / c[1];
-  }
-}
-
-)";
+)" + CWriter::fill(kSaturatingInverse, {{"INVERSE", "atanh"}});
 }
 
 // The clamp limit of the inverse envelope's argument: the library's 1 - 1e-12 in double; in
