@@ -64,6 +64,7 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   add_info_command(app);
   add_actuator_command(app);
   add_data_command(app);
+  add_export_command(app);
 
   try {
     app.parse(argc, argv);

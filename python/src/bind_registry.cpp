@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/export/export_c.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -180,6 +181,26 @@ void bind_registry(py::module_& module) {
       },
       "path"_a, "model"_a, "info"_a = py::none(),
       "Writes a model file atomically; `info` (a dict, e.g. the fit report) is stored as given.");
+
+  module.def(
+      "export_c",
+      [](const DynamicModel& m, const std::filesystem::path& folder, const std::string& prefix,
+         bool single, double input_min, double input_max, const std::string& source) {
+        CExportOptions options;
+        options.prefix = prefix;
+        options.scalar = single ? CScalar::single_precision : CScalar::double_precision;
+        options.limits = {input_min, input_max};
+        options.source = source;
+        const CCode code = export_c(m, folder, options);
+        return py::dict("header"_a = folder / code.header_name,
+                        "source"_a = folder / code.source_name, "has_inverse"_a = code.has_inverse);
+      },
+      "model"_a, "folder"_a, "prefix"_a = "", "float"_a = false,
+      "input_min"_a = -std::numeric_limits<double>::infinity(),
+      "input_max"_a = std::numeric_limits<double>::infinity(), "source"_a = "",
+      "Writes the model (and its inverse, where there is one) as dependency-free C99 code: "
+      "<prefix>.h and <prefix>.c in an existing folder (as `hyst export --lang c`). Returns "
+      "{'header', 'source', 'has_inverse'}.");
 
   module.def(
       "fit",

@@ -755,6 +755,61 @@ case_bad_data_files() {
     fail "lengths.mat a line: $(grep '^  a' "$WORK/stdout")"
 }
 
+# hyst export: the exported C (compiled with gcc) reproduces `hyst simulate` and `hyst invert`.
+case_export_c() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
+  write_input_csv in.csv
+  mkdir c
+  expect_ok "$HYST" export --model known.json --lang c --out c --prefix piezo
+  expect_stdout "wrote c/piezo.h and c/piezo.c" "and its inverse" "double"
+  grep -q 'known.json' c/piezo.h || fail "piezo.h does not name the model file"
+  cat >c/main.c <<'C'
+#include <stdio.h>
+#include "piezo.h"
+/* Reads "t,v" rows; writes "v,y,v_back": the model's output and the inverse of that output. */
+int main(void) {
+  char line[256];
+  double t, v;
+  piezo_state model;
+  piezo_inverse_state inverse;
+  piezo_init(&model);
+  piezo_inverse_init(&inverse);
+  if (!fgets(line, sizeof line, stdin)) return 1;
+  printf("v,y,v_back\n");
+  while (scanf("%lf,%lf", &t, &v) == 2) {
+    const double y = piezo_step(&piezo_PARAMS, &model, v);
+    printf("%.17g,%.17g,%.17g\n", v, y, piezo_inverse_step(&piezo_INVERSE_PARAMS, &inverse, y));
+  }
+  return 0;
+}
+C
+  gcc -std=c99 -Wall -Wextra -Werror -pedantic -O2 -o c/main c/main.c c/piezo.c -lm 2>gcc.txt ||
+    fail "gcc: $(cat gcc.txt)"
+  c/main <in.csv >c_out.csv || fail "the compiled program failed"
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out lib.csv
+  expect_close lib.csv 2 c_out.csv 2 1e-12
+  expect_close c_out.csv 1 c_out.csv 3 1e-9
+  # Float code compiles as well.
+  expect_ok "$HYST" export --model known.json --out c --prefix piezo_f --float
+  gcc -std=c99 -Wall -Wextra -Werror -pedantic -c -o c/piezo_f.o c/piezo_f.c 2>gcc.txt ||
+    fail "gcc (float): $(cat gcc.txt)"
+  expect_no_temporaries
+}
+
+case_export_bad_inputs() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  mkdir out
+  expect_error 1 "--float and --double" -- "$HYST" export --model known.json --out out --float --double
+  expect_error 1 "--lang 'rust'" -- "$HYST" export --model known.json --lang rust --out out
+  expect_error 1 "missing" "does not exist" -- "$HYST" export --model known.json --out missing
+  printf 'x\n' >file
+  expect_error 1 "'file'" "not a folder" -- "$HYST" export --model known.json --out file
+  expect_error 1 "prefix '2x'" "C identifier" -- "$HYST" export --model known.json --out out --prefix 2x
+  printf '{"model": "kp", "version": 1, "params": {"levels": 4, "lower": 0, "upper": 1, "weights": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]}}\n' >kp.json
+  expect_error 1 "kp.json" "'kp' is not supported" -- "$HYST" export --model kp.json --out out
+  [ -z "$(ls out)" ] || fail "files were written for failed exports: $(ls out)"
+}
+
 # --- main -------------------------------------------------------------------------------------
 
 if [ "$#" -ne 1 ] || ! declare -F "case_$1" >/dev/null; then

@@ -1,0 +1,279 @@
+// C emitters of the classical and the modified Prandtl-Ishlinskii model with their analytic
+// inverses (prandtl_ishlinskii.hpp, modified_prandtl_ishlinskii.hpp,
+// inverse_prandtl_ishlinskii.hpp, inverse_modified_prandtl_ishlinskii.hpp).
+
+#include <string>
+
+#include <fmt/format.h>
+
+#include "../registry/model_entries.hpp"
+#include "c_emitters.hpp"
+#include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
+
+namespace hyst::detail {
+namespace {
+
+constexpr std::string_view kCopyFunction = R"(/* Copies an exported play state. */
+static void @_copy_play(@_real *play, const @_real *from) {
+  unsigned int j;
+  for (j = 0; j < @_OPERATORS; ++j) play[j] = from[j];
+}
+
+)";
+
+// The state type both models share (after their own @_params struct).
+constexpr std::string_view kStateType = R"(
+/* State: the play outputs w_j [input units]. */
+typedef struct {
+  @_real play[@_OPERATORS];
+} @_state;
+)";
+
+// The inverse state type both models share (after their own @_inverse_params struct).
+constexpr std::string_view kInverseStateType = R"(
+/* State of the inverse: its play outputs wh_j [output units]. */
+typedef struct {
+  @_real play[@_OPERATORS];
+} @_inverse_state;
+)";
+
+std::string model_declarations() {
+  return std::string(kStateType) +
+         c_model_declarations("every w_j = 0", "updates every play and returns the output.");
+}
+
+std::string inverse_declarations() {
+  return std::string(kInverseStateType) + c_inverse_declarations("");
+}
+
+constexpr std::string_view kClampFunction =
+    R"(/* The inverse's input limits (the library's below_range / above_range answers). */
+static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
+  if (input < input_min) return input_min;
+  if (input > input_max) return input_max;
+  return input;
+}
+
+)";
+
+constexpr std::string_view kDeadZoneFunction =
+    R"(/* S(x) = sum_i g_i S_{d_i}(x), S_d(x) = max(x - d, 0) for d > 0, x for d = 0, min(x - d, 0)
+   for d < 0 (the library's DeadZoneSuperposition, i in order). */
+static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_real x) {
+  @_real y = #(0.0);
+  unsigned int i;
+  for (i = 0; i < @_DEAD_ZONES; ++i) {
+    const @_real d = thresholds[i];
+    @_real zone = x;
+    if (d > #(0.0)) {
+      zone = x - d < #(0.0) ? #(0.0) : x - d;
+    } else if (d < #(0.0)) {
+      zone = #(0.0) < x - d ? #(0.0) : x - d;
+    }
+    y += weights[i] * zone;
+  }
+  return y;
+}
+
+)";
+
+std::string state_tables(const CWriter& writer, std::string_view name,
+                         const std::vector<double>& init, const std::vector<double>& reset) {
+  return CWriter::fill(
+      "/* The state stored in the model file (INIT) and the default initial state (RESET). */\n"
+      "static const @_real @_%NAME%_INIT[@_OPERATORS] = %INIT%;\n"
+      "static const @_real @_%NAME%_RESET[@_OPERATORS] = %RESET%;\n\n",
+      {{"NAME", std::string(name)}, {"INIT", writer.table(init)}, {"RESET", writer.table(reset)}});
+}
+
+std::string model_state_functions(const DynamicModel& model, const CWriter& writer,
+                                  const std::vector<double>& reset) {
+  return state_tables(writer, "PLAY", play_of(model.state()), reset) +
+         "void @_init(@_state *state) { @_copy_play(state->play, @_PLAY_INIT); }\n\n"
+         "void @_reset(@_state *state) { @_copy_play(state->play, @_PLAY_RESET); }\n\n";
+}
+
+std::string inverse_state_functions(const DynamicModel& model, const CWriter& writer,
+                                    const CExportOptions& options,
+                                    const std::vector<double>& reset) {
+  return state_tables(writer, "INVERSE_PLAY", play_of(model.inverse(options.limits)->state()),
+                      reset) +
+         "void @_inverse_init(@_inverse_state *state) {\n"
+         "  @_copy_play(state->play, @_INVERSE_PLAY_INIT);\n}\n\n"
+         "void @_inverse_reset(@_inverse_state *state) {\n"
+         "  @_copy_play(state->play, @_INVERSE_PLAY_RESET);\n}\n\n";
+}
+
+}  // namespace
+
+CModelCode emit_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
+                                     const CExportOptions& options) {
+  const PrandtlIshlinskii pi(prandtl_ishlinskii_params_from_json(model.params(), "params"));
+  const auto& p = pi.params();
+  CModelCode code;
+  code.title = fmt::format("Prandtl-Ishlinskii model (pi), {} play operators", pi.size());
+  code.description =
+      " *     y = y_off + sum_j p_j w_j,   w_j = max(v - r_j, min(v + r_j, w_j previous))\n"
+      " * (include/hyst/models/prandtl_ishlinskii.hpp). Inverse, when p_0 > 0 and every partial\n"
+      " * sum of the weights is > 0: the analytic inverse PI (Krejci & Kuhnen 2001),\n"
+      " * v = sum_j ph_j wh_j on y - y_off "
+      "(include/hyst/inverse/inverse_prandtl_ishlinskii.hpp).\n";
+  code.has_inverse = pi.is_invertible();
+  code.header = CWriter::fill(R"(#define @_OPERATORS %N%
+
+/* Parameters: thresholds r_j [input units], weights p_j [output/input units], offset y_off
+   [output units]. */
+typedef struct {
+  @_real thresholds[@_OPERATORS];
+  @_real weights[@_OPERATORS];
+  @_real offset;
+} @_params;
+)",
+                              {{"N", std::to_string(pi.size())}}) +
+                model_declarations();
+  code.source = std::string(c_play_functions()) + std::string(kCopyFunction) +
+                CWriter::fill("const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %OFF%};\n\n",
+                              {{"R", writer.table(p.thresholds)},
+                               {"P", writer.table(p.weights)},
+                               {"OFF", writer.number(p.offset)}}) +
+                model_state_functions(model, writer, pi.initial_state().play) +
+                R"(@_real @_step(const @_params *params, @_state *state, @_real input) {
+  return @_play_sum(params->thresholds, params->weights, params->offset, state->play,
+                    @_OPERATORS, input);
+}
+)";
+  if (!code.has_inverse) return code;
+
+  const InversePrandtlIshlinskii inverse(pi, {options.limits.input_min, options.limits.input_max});
+  const auto& ip = inverse.inverse_operator().params();
+  code.header += R"(
+/* Inverse parameters: a PI operator with thresholds rh_j and weights ph_j on target - y_off,
+   then the input limits. */
+typedef struct {
+  @_real thresholds[@_OPERATORS]; /* rh_j [output units] */
+  @_real weights[@_OPERATORS];    /* ph_j [input/output units] */
+  @_real input_min;               /* admissible input range [input units] */
+  @_real input_max;
+  @_real offset;                  /* y_off */
+} @_inverse_params;
+)" + inverse_declarations();
+  code.source += "\n" + std::string(kClampFunction) +
+                 CWriter::fill(
+                     "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n"
+                     "    %MIN%, %MAX%, %OFF%};\n\n",
+                     {{"R", writer.table(ip.thresholds)},
+                      {"P", writer.table(ip.weights)},
+                      {"MIN", writer.number(options.limits.input_min)},
+                      {"MAX", writer.number(options.limits.input_max)},
+                      {"OFF", writer.number(p.offset)}}) +
+                 inverse_state_functions(model, writer, options, inverse.initial_state().play) +
+                 R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
+                     @_real target) {
+  const @_real input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
+                                  @_OPERATORS, target - params->offset);
+  return @_clamp(input, params->input_min, params->input_max);
+}
+)";
+  return code;
+}
+
+CModelCode emit_modified_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
+                                              const CExportOptions& options) {
+  const ModifiedPrandtlIshlinskii mpi(
+      modified_prandtl_ishlinskii_params_from_json(model.params(), "params"));
+  const auto& p = mpi.params();
+  CModelCode code;
+  code.title = fmt::format(
+      "modified Prandtl-Ishlinskii model (modified_pi), {} play operators, {} dead zones",
+      mpi.hysteresis().size(), mpi.dead_zone().size());
+  code.description =
+      " *     y = y_off + S(q + sum_j p_j w_j),   S(x) = sum_i g_i S_{d_i}(x)   (Kuhnen 2003)\n"
+      " * (include/hyst/models/modified_prandtl_ishlinskii.hpp). Inverse, when both parts are\n"
+      " * invertible: v = PI^-1[S^-1(y - y_off)], S^-1 again a dead-zone superposition\n"
+      " * (include/hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp).\n";
+  code.has_inverse = mpi.is_invertible();
+  code.header = CWriter::fill(R"(#define @_OPERATORS %N%
+#define @_DEAD_ZONES %D%
+
+/* Parameters: the PI part (thresholds r_j [input units], weights p_j, its offset q [output
+   units]), the dead zones (thresholds d_i [output units], weights g_i) and the offset y_off. */
+typedef struct {
+  @_real thresholds[@_OPERATORS];
+  @_real weights[@_OPERATORS];
+  @_real pi_offset;
+  @_real dead_zone_thresholds[@_DEAD_ZONES];
+  @_real dead_zone_weights[@_DEAD_ZONES];
+  @_real offset;
+} @_params;
+)",
+                              {{"N", std::to_string(mpi.hysteresis().size())},
+                               {"D", std::to_string(mpi.dead_zone().size())}}) +
+                model_declarations();
+  code.source =
+      std::string(c_play_functions()) + std::string(kCopyFunction) +
+      std::string(kDeadZoneFunction) +
+      CWriter::fill(
+          "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %Q%,\n    %D%,\n    %G%,\n"
+          "    %OFF%};\n\n",
+          {{"R", writer.table(p.pi.thresholds)},
+           {"P", writer.table(p.pi.weights)},
+           {"Q", writer.number(p.pi.offset)},
+           {"D", writer.table(p.dead_zone.thresholds)},
+           {"G", writer.table(p.dead_zone.weights)},
+           {"OFF", writer.number(p.offset)}}) +
+      model_state_functions(model, writer, mpi.initial_state().play) +
+      R"(@_real @_step(const @_params *params, @_state *state, @_real input) {
+  const @_real hysteresis = @_play_sum(params->thresholds, params->weights, params->pi_offset,
+                                       state->play, @_OPERATORS, input);
+  return params->offset +
+         @_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights, hysteresis);
+}
+)";
+  if (!code.has_inverse) return code;
+
+  const InverseModifiedPrandtlIshlinskii inverse(
+      mpi, {options.limits.input_min, options.limits.input_max});
+  const auto& ip = inverse.hysteresis_inverse().inverse_operator().params();
+  const auto& dz = inverse.dead_zone_inverse().params();
+  code.header += R"(
+/* Inverse parameters: S^-1 (thresholds d'_i, weights g'_i) on target - y_off, then a PI operator
+   with thresholds rh_j and weights ph_j on that minus q, then the input limits. */
+typedef struct {
+  @_real dead_zone_thresholds[@_DEAD_ZONES]; /* d'_i */
+  @_real dead_zone_weights[@_DEAD_ZONES];    /* g'_i */
+  @_real offset;                             /* y_off */
+  @_real thresholds[@_OPERATORS];            /* rh_j */
+  @_real weights[@_OPERATORS];               /* ph_j */
+  @_real pi_offset;                          /* q */
+  @_real input_min;                          /* admissible input range [input units] */
+  @_real input_max;
+} @_inverse_params;
+)" + inverse_declarations();
+  code.source +=
+      "\n" + std::string(kClampFunction) +
+      CWriter::fill(
+          "const @_inverse_params @_INVERSE_PARAMS = {\n    %D%,\n    %G%,\n    %OFF%,\n    %R%,\n"
+          "    %P%,\n    %Q%, %MIN%, %MAX%};\n\n",
+          {{"D", writer.table(dz.thresholds)},
+           {"G", writer.table(dz.weights)},
+           {"OFF", writer.number(p.offset)},
+           {"R", writer.table(ip.thresholds)},
+           {"P", writer.table(ip.weights)},
+           {"Q", writer.number(p.pi.offset)},
+           {"MIN", writer.number(options.limits.input_min)},
+           {"MAX", writer.number(options.limits.input_max)}}) +
+      inverse_state_functions(model, writer, options, inverse.initial_state().play) +
+      R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
+                     @_real target) {
+  const @_real hysteresis = @_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights,
+                                         target - params->offset);
+  const @_real input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
+                                  @_OPERATORS, hysteresis - params->pi_offset);
+  return @_clamp(input, params->input_min, params->input_max);
+}
+)";
+  return code;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,172 @@
+#include "c_writer.hpp"
+
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace hyst::detail {
+namespace {
+
+// A literal that C reads as floating point: "1" becomes "1.0".
+std::string with_point(std::string text) {
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+bool is_identifier_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+}  // namespace
+
+std::string CWriter::number(double value) const {
+  if (std::isinf(value)) {
+    return fmt::format("{}HUGE_VAL{}", value < 0.0 ? "-" : "", single() ? "F" : "");
+  }
+  if (single()) return with_point(fmt::format("{:.9g}", static_cast<float>(value))) + "f";
+  return with_point(fmt::format("{:.17g}", value));
+}
+
+std::string CWriter::table(std::span<const double> values) const {
+  constexpr std::size_t per_line = 4;
+  std::string text = "{";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) text += ",";
+    text += i % per_line == 0 ? "\n      " : " ";
+    text += number(values[i]);
+  }
+  text += "}";
+  return text;
+}
+
+std::string CWriter::expand(std::string_view text) const {
+  std::string out;
+  out.reserve(text.size() + text.size() / 4);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '@') {
+      out += prefix_;
+    } else if (c == '$') {
+      std::size_t end = i + 1;
+      while (end < text.size() && is_identifier_char(text[end]))
+        ++end;
+      out += text.substr(i + 1, end - i - 1);
+      if (single()) out += 'f';
+      i = end - 1;
+    } else if (c == '#' && i + 1 < text.size() && text[i + 1] == '(') {
+      const std::size_t close = text.find(')', i);
+      out += with_point(std::string(text.substr(i + 2, close - i - 2)));
+      if (single()) out += 'f';
+      i = close;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string CWriter::fill(std::string_view text,
+                          std::initializer_list<std::pair<std::string_view, std::string>> values) {
+  std::string out(text);
+  for (const auto& [name, value] : values) {
+    const std::string token = fmt::format("%{}%", name);
+    for (std::size_t at = out.find(token); at != std::string::npos;
+         at = out.find(token, at + value.size()))
+      out.replace(at, token.size(), value);
+  }
+  return out;
+}
+
+std::string_view c_play_functions() {
+  return R"(/* One play operator, w = max(v - r, min(v + r, w_previous)), with the branch rule of
+   std::max/std::min as in the library's play_step(). */
+static @_real @_play(@_real input, @_real threshold, @_real previous) {
+  const @_real upper = input + threshold;
+  const @_real lower = input - threshold;
+  const @_real clipped = previous < upper ? previous : upper;
+  return lower < clipped ? clipped : lower;
+}
+
+/* n plays updated in place, then offset + sum_j weights[j] play[j] (j in order). */
+static @_real @_play_sum(const @_real *thresholds, const @_real *weights, @_real offset,
+                         @_real *play, unsigned int n, @_real input) {
+  @_real sum = #(0.0);
+  unsigned int j;
+  for (j = 0; j < n; ++j) play[j] = @_play(input, thresholds[j], play[j]);
+  for (j = 0; j < n; ++j) sum += weights[j] * play[j];
+  return offset + sum;
+}
+
+)";
+}
+
+std::string c_model_declarations(std::string_view reset_note, std::string_view step_note) {
+  return CWriter::fill(R"(
+/* The fitted parameters. */
+extern const @_params @_PARAMS;
+
+/* The state stored in the model file. */
+void @_init(@_state *state);
+/* The model's default initial state (%RESET%). */
+void @_reset(@_state *state);
+/* One sample: %STEP% */
+@_real @_step(const @_params *params, @_state *state, @_real input);
+)",
+                       {{"RESET", std::string(reset_note)}, {"STEP", std::string(step_note)}});
+}
+
+std::string c_inverse_declarations(std::string_view step_note) {
+  return CWriter::fill(R"(
+/* The inverse's parameters, computed by the library from the fitted ones. */
+extern const @_inverse_params @_INVERSE_PARAMS;
+
+/* Inverse in the state consistent with the model file's state (as `hyst invert` starts it). */
+void @_inverse_init(@_inverse_state *state);
+/* Inverse in the state consistent with the model's default initial state. */
+void @_inverse_reset(@_inverse_state *state);
+/* The input that makes the model produce `target`%STEP%; advances the inverse's state. */
+@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
+)",
+                       {{"STEP", std::string(step_note)}});
+}
+
+CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
+                       std::string_view source_file) {
+  std::string guard;
+  for (const char c : writer.prefix())
+    guard += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  guard += "_H_INCLUDED";
+  const std::string origin =
+      source_file.empty() ? std::string("a model object") : fmt::format("'{}'", source_file);
+  const std::string preamble = fmt::format(
+      " * {}\n"
+      " * Exported by hyst from {}; regenerate it instead of editing it:\n"
+      " *     hyst export --model FILE --lang c --out DIR --prefix {}{}\n"
+      " *\n"
+      "{}"
+      " *\n"
+      " * Scalar type: {}.\n"
+      " * Plain C99: no heap, no library beyond <math.h>, no recursion, every loop bounded by a\n"
+      " * size fixed at export time, tables const.\n"
+      " */\n",
+      code.title, origin, writer.prefix(), writer.single() ? " --float" : "", code.description,
+      writer.single() ? "float (every operation in single precision)"
+                      : "double (reproduces the library's step to rounding)");
+
+  CCode files;
+  files.header_name = writer.prefix() + ".h";
+  files.source_name = writer.prefix() + ".c";
+  files.has_inverse = code.has_inverse;
+  files.header = fmt::format(
+      "/* {}: declarations.\n{}\n#ifndef {}\n#define {}\n\n#ifdef __cplusplus\nextern \"C\" {{\n"
+      "#endif\n\ntypedef {} {}_real;\n\n{}\n#ifdef __cplusplus\n}}\n#endif\n\n#endif /* {} */\n",
+      files.header_name, preamble, guard, guard, writer.single() ? "float" : "double",
+      writer.prefix(), writer.expand(code.header), guard);
+  files.source =
+      fmt::format("/* {}: tables and functions.\n{}\n#include \"{}\"\n\n#include <math.h>\n\n{}",
+                  files.source_name, preamble, files.header_name, writer.expand(code.source));
+  return files;
+}
+
+}  // namespace hyst::detail

@@ -1,0 +1,67 @@
+#pragma once
+// The common part of the C export: number and table formatting for the chosen scalar type, the
+// placeholder expansion of C templates, the file preamble and the atomic write.
+
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "hyst/export/export_c.hpp"
+
+namespace hyst::detail {
+
+//! What a model family's emitter produces: the declarations for the header and the definitions
+//! for the source file, both as C templates (see CWriter::expand()).
+struct CModelCode {
+  std::string title;        //!< one line naming the model, e.g. "Prandtl-Ishlinskii model (pi)"
+  std::string description;  //!< a few comment lines: equations, scheme, sizes
+  std::string header;       //!< types, sizes and prototypes
+  std::string source;       //!< tables and functions
+  bool has_inverse = false;
+};
+
+//! Formats C text for one prefix and scalar type.
+class CWriter {
+ public:
+  CWriter(std::string prefix, CScalar scalar) : prefix_(std::move(prefix)), scalar_(scalar) {}
+
+  const std::string& prefix() const { return prefix_; }
+  bool single() const { return scalar_ == CScalar::single_precision; }
+
+  //! A C literal of the scalar type: "%.17g" in double, the value rounded to float as "%.9g" with
+  //! an 'f' suffix in float (both read back exactly); +-inf as (-)HUGE_VAL(F).
+  std::string number(double value) const;
+  //! "{a, b, c}" with line breaks every few numbers.
+  std::string table(std::span<const double> values) const;
+
+  //! Replaces the placeholders of a C template: '@' by the prefix, "$name" (a math.h function,
+  //! e.g. $exp) by name or namef, and "#(x)" (a literal) by x or xf.
+  std::string expand(std::string_view text) const;
+
+  //! Replaces every "%NAME%" of `text` by its value (table or number text of the emitter).
+  static std::string fill(std::string_view text,
+                          std::initializer_list<std::pair<std::string_view, std::string>> values);
+
+ private:
+  std::string prefix_;
+  CScalar scalar_;
+};
+
+//! The C template of the functions the PI family shares (one play step, a play-and-sum step over
+//! n operators, the input clamp of the inverses); included once in a source file.
+std::string_view c_play_functions();
+
+//! The declarations every model shares, after its @_params and @_state types: the fitted
+//! parameters, init (the model file's state), reset (`reset_note`: the default initial state) and
+//! step (`step_note`: what one sample does).
+std::string c_model_declarations(std::string_view reset_note, std::string_view step_note);
+//! The same for an inverse, after its @_inverse_params and @_inverse_state types.
+std::string c_inverse_declarations(std::string_view step_note);
+
+//! The complete header and source for a model's code, with the preamble that names the model, the
+//! file it came from and the scalar type.
+CCode assemble_c_files(const CWriter& writer, const CModelCode& code, std::string_view source_file);
+
+}  // namespace hyst::detail

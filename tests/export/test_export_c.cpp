@@ -1,0 +1,375 @@
+// The exported C code against the library: every supported model (and its inverse) is exported,
+// compiled with gcc -std=c99 -Wall -Wextra -Werror -pedantic (plain and -DNDEBUG -O2), run on
+// seeded inputs, and its outputs compared with the library's simulate/invert from the same
+// states: to 1e-12 (relative to the output scale) in double, within a stated bound in float.
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "../support/expect_error.hpp"
+#include "../support/temp_folder_test.hpp"
+#include "hyst/export/export_c.hpp"
+#include "hyst/models/preisach.hpp"
+#include "hyst/registry/model_file.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst {
+namespace {
+
+// Runs a shell command; returns its exit status and (when wanted) its standard output.
+int run(const std::string& command, std::string* output = nullptr) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return -1;
+  std::string text;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+    text += buffer;
+  const int status = ::pclose(pipe);
+  if (output) *output = text;
+  return status;
+}
+
+std::vector<double> numbers_in(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<double> values;
+  std::string token;
+  while (in >> token)
+    values.push_back(std::stod(token));
+  return values;
+}
+
+// A seeded input: a random walk with reversals of all sizes, clipped to [low, high], some
+// samples repeated (no-change steps) and a few beyond the range.
+std::vector<double> seeded_input(unsigned seed, double low, double high, std::size_t count) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> input(count);
+  const double span = high - low;
+  double v = low + 0.5 * span;
+  double direction = 1.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (unit(random) < 0.08) direction = -direction;
+    const double draw = unit(random);
+    if (draw > 0.05) v += direction * span * 0.04 * unit(random);
+    v = std::clamp(v, low - 0.02 * span, high + 0.02 * span);
+    input[k] = v;
+  }
+  return input;
+}
+
+// The driver: reads n inputs and n targets, runs the model from init() and from reset() and the
+// inverse (if any) from inverse_init() and inverse_reset(), printing every value with %.17g.
+std::string driver(const std::string& prefix, bool has_inverse) {
+  std::string text = fmt::format(R"(#include <stdio.h>
+#include "{0}.h"
+#define COUNT 4000
+static double input[COUNT];
+static double target[COUNT];
+int main(void) {{
+  int n = 0, k;
+  {0}_state state;
+  FILE *file = fopen("data.txt", "r");
+  if (!file) return 2;
+  while (n < COUNT && fscanf(file, "%lf %lf", &input[n], &target[n]) == 2) ++n;
+  fclose(file);
+  {0}_init(&state);
+  for (k = 0; k < n; ++k) printf("%.17g\n", (double){0}_step(&{0}_PARAMS, &state, ({0}_real)input[k]));
+  {0}_reset(&state);
+  for (k = 0; k < n; ++k) printf("%.17g\n", (double){0}_step(&{0}_PARAMS, &state, ({0}_real)input[k]));
+)",
+                                 prefix);
+  if (has_inverse) {
+    text += fmt::format(R"(  {{
+    {0}_inverse_state inverse;
+    {0}_inverse_init(&inverse);
+    for (k = 0; k < n; ++k)
+      printf("%.17g\n", (double){0}_inverse_step(&{0}_INVERSE_PARAMS, &inverse, ({0}_real)target[k]));
+    {0}_inverse_reset(&inverse);
+    for (k = 0; k < n; ++k)
+      printf("%.17g\n", (double){0}_inverse_step(&{0}_INVERSE_PARAMS, &inverse, ({0}_real)target[k]));
+  }}
+)",
+                        prefix);
+  }
+  return text + "  return 0;\n}\n";
+}
+
+struct Case {
+  nlohmann::json document;  // model file
+  double low = -1.0;        // input range of the test signal
+  double high = 1.0;
+  std::size_t warm_up = 300;  // library samples before the export: a state that is not the default
+  std::vector<double> input{};  // the test input and the source of the targets; empty = seeded
+};
+
+class ExportCTest : public test::TempFolderTest {
+ protected:
+  // The library's outputs in the order the driver prints them.
+  static std::vector<double> library_run(const DynamicModel& exported, bool has_inverse,
+                                         const InverseLimits& limits,
+                                         const std::vector<double>& input,
+                                         const std::vector<double>& target) {
+    std::vector<double> all;
+    std::vector<double> out(input.size());
+    auto model = exported.clone();
+    model->simulate(input, out);
+    all.insert(all.end(), out.begin(), out.end());
+    model = exported.clone();
+    model->reset();
+    model->simulate(input, out);
+    all.insert(all.end(), out.begin(), out.end());
+    if (has_inverse) {
+      exported.inverse(limits)->invert(target, out);
+      all.insert(all.end(), out.begin(), out.end());
+      model = exported.clone();
+      model->reset();
+      model->inverse(limits)->invert(target, out);
+      all.insert(all.end(), out.begin(), out.end());
+    }
+    return all;
+  }
+
+  // Exports, compiles with `flags`, runs; returns the C outputs and the library's.
+  void compare(const Case& c, CScalar scalar, const std::string& flags, double tolerance,
+               const InverseLimits& limits = {}) {
+    auto model = model_from_json(c.document, "test");
+    const auto warm = seeded_input(7, c.low, c.high, c.warm_up);
+    std::vector<double> ignored(warm.size());
+    model->simulate(warm, ignored);  // the exported state is this one, not the default
+
+    const auto input = c.input.empty() ? seeded_input(11, c.low, c.high, 3000) : c.input;
+    // Reachable targets: the library's own output for another input.
+    std::vector<double> target(input.size());
+    model->clone()->simulate(
+        c.input.empty() ? seeded_input(13, c.low, c.high, input.size()) : c.input, target);
+
+    CExportOptions options;
+    options.prefix = "exported";
+    options.scalar = scalar;
+    options.limits = limits;
+    options.source = "test.json";
+    const CCode code = export_c(*model, dir_, options);
+    {
+      std::ofstream data(dir_ / "data.txt");
+      for (std::size_t k = 0; k < input.size(); ++k)
+        data << fmt::format("{:.17g} {:.17g}\n", input[k], target[k]);
+      std::ofstream(dir_ / "driver.c") << driver("exported", code.has_inverse);
+    }
+    const std::string compile = fmt::format(
+        "cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic {} -o driver driver.c exported.c "
+        "-lm 2>&1",
+        dir_.string(), flags);
+    std::string log;
+    ASSERT_EQ(run(compile, &log), 0) << compile << "\n" << log;
+    std::string printed;
+    ASSERT_EQ(run(fmt::format("cd '{}' && ./driver", dir_.string()), &printed), 0);
+    const auto from_c = numbers_in(printed);
+    const auto from_library = library_run(*model, code.has_inverse, limits, input, target);
+    ASSERT_EQ(from_c.size(), from_library.size());
+    double scale = 1.0;
+    for (const double y : from_library)
+      scale = std::max(scale, std::abs(y));
+    double worst = 0.0;
+    std::size_t worst_at = 0;
+    for (std::size_t k = 0; k < from_c.size(); ++k) {
+      const double error = std::abs(from_c[k] - from_library[k]);
+      if (error > worst) {
+        worst = error;
+        worst_at = k;
+      }
+    }
+    EXPECT_LE(worst, tolerance * scale)
+        << "sample " << worst_at << " (run " << worst_at / input.size() << "): C "
+        << from_c[worst_at] << " library " << from_library[worst_at];
+    last_worst_ = worst / scale;
+    std::printf("[ worst    ] %s %s %s: %.3g of scale %.3g over %zu values\n",
+                c.document.at("model").get<std::string>().c_str(),
+                scalar == CScalar::single_precision ? "float" : "double", flags.c_str(),
+                worst / scale, scale, from_c.size());
+  }
+
+  // Exports and compiles to an object file; returns its undefined symbols (nm -u).
+  std::set<std::string> undefined_symbols(const Case& c, CScalar scalar) {
+    auto model = model_from_json(c.document, "test");
+    CExportOptions options;
+    options.prefix = "exported";
+    options.scalar = scalar;
+    export_c(*model, dir_, options);
+    const std::string compile = fmt::format(
+        "cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -DNDEBUG -O2 -c exported.c 2>&1",
+        dir_.string());
+    std::string log;
+    EXPECT_EQ(run(compile, &log), 0) << log;
+    std::string listing;
+    EXPECT_EQ(run(fmt::format("nm -u '{}'", (dir_ / "exported.o").string()), &listing), 0);
+    std::set<std::string> symbols;
+    std::istringstream in(listing);
+    std::string kind;
+    std::string name;
+    while (in >> kind >> name)
+      symbols.insert(name);
+    return symbols;
+  }
+
+  void check_everything(const Case& c, double float_bound, const InverseLimits& limits = {}) {
+    compare(c, CScalar::double_precision, "", 1e-12, limits);
+    compare(c, CScalar::double_precision, "-DNDEBUG -O2", 1e-12, limits);
+    compare(c, CScalar::single_precision, "-DNDEBUG -O2", float_bound, limits);
+    // Only math.h functions (and nothing from the heap).
+    const std::set<std::string> math = {"exp",    "expf", "log1p", "log1pf",   "expm1",
+                                        "expm1f", "pow",  "powf",  "atanh",    "atanhf",
+                                        "tan",    "tanf", "atan",  "atanf",    "ceil",
+                                        "ceilf",  "fabs", "fabsf", "copysign", "copysignf"};
+    for (const auto scalar : {CScalar::double_precision, CScalar::single_precision}) {
+      for (const auto& symbol : undefined_symbols(c, scalar)) {
+        EXPECT_TRUE(math.count(symbol) == 1) << "the object code references " << symbol;
+        EXPECT_NE(symbol, "malloc");
+        EXPECT_NE(symbol, "free");
+      }
+    }
+  }
+
+  double last_worst_ = 0.0;
+};
+
+nlohmann::json model_document(std::string_view name, nlohmann::json params) {
+  return {{"model", name}, {"version", 1}, {"params", std::move(params)}};
+}
+
+// The relay-grid parameters of a Preisach model document.
+Preisach::Params preisach_params_of(const nlohmann::json& document) {
+  const auto& p = document.at("params");
+  Preisach::Params params;
+  params.everett.levels = p.at("levels").get<std::size_t>();
+  params.everett.lower = p.at("lower").get<double>();
+  params.everett.upper = p.at("upper").get<double>();
+  params.everett.weights = p.at("weights").get<std::vector<double>>();
+  return params;
+}
+
+nlohmann::json example_document(std::string_view name) {
+  return model_document(name, ModelRegistry::builtin().find(name).example_params);
+}
+
+// Float bounds, relative to the largest output magnitude of the run (>= 1): single precision has
+// a 6e-8 unit roundoff; the bounds leave room for the sums over the operators and for the
+// inverses, which amplify it where the model is flat.
+constexpr double kFloatBound = 2e-5;
+
+TEST_F(ExportCTest, PrandtlIshlinskiiAndItsInverse) {
+  Case c{model_document("pi", {{"thresholds", {0.0, 0.15, 0.3, 0.45, 0.6, 0.75}},
+                               {"weights", {1.1, 0.4, 0.3, -0.2, 0.25, 0.1}},
+                               {"offset", 0.35}})};
+  check_everything(c, kFloatBound);
+}
+
+TEST_F(ExportCTest, InversePrandtlIshlinskiiWithInputLimits) {
+  Case c{model_document(
+      "pi", {{"thresholds", {0.0, 0.2, 0.4}}, {"weights", {0.9, 0.5, 0.3}}, {"offset", 0.0}})};
+  compare(c, CScalar::double_precision, "-O2", 1e-12, {-0.5, 0.6});
+}
+
+TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiAndItsInverse) {
+  check_everything({example_document("modified_pi"), -2.0, 2.0}, kFloatBound);
+}
+
+TEST_F(ExportCTest, GeneralizedPrandtlIshlinskiiAndItsInverseForEveryEnvelope) {
+  auto tanh = example_document("gpi");
+  check_everything({tanh, -2.5, 2.5}, kFloatBound);
+  auto arctan = tanh;
+  arctan["params"]["envelope"] = "arctan";
+  check_everything({arctan, -2.5, 2.5}, kFloatBound);
+  auto linear = tanh;
+  linear["params"]["envelope"] = "linear";
+  linear["params"]["ascending"] = {1.0, -0.1};
+  linear["params"]["descending"] = {1.0, 0.1};
+  check_everything({linear, -2.5, 2.5}, kFloatBound);
+}
+
+TEST_F(ExportCTest, PreisachAndItsNumericalInverse) {
+  // Random non-negative weights on an 11-level grid; the input also leaves the range (saturation).
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> weights(66);
+  for (auto& w : weights)
+    w = unit(random);
+  Case c{model_document("preisach", {{"levels", 11},
+                                     {"lower", -1.0},
+                                     {"upper", 1.0},
+                                     {"weights", weights},
+                                     {"offset", 0.2},
+                                     {"initial_state", "demagnetised"}})};
+  // Float: the relay grid makes the output a step function of the input, so an input within
+  // float rounding of a level may switch one relay more or less; and the inverse answers with a
+  // float input. The bound is one relay weight (< 1) relative to the output scale (F0 ~ 33).
+  check_everything(c, 0.04);
+}
+
+TEST_F(ExportCTest, PreisachMemoryOverflowDropsTheSamePairs) {
+  // 400 loops nested in one another (ever-shrinking oscillations) overflow the 256-pair memory:
+  // the C code must drop the same innermost pairs as the library.
+  std::vector<double> input;
+  for (int k = 0; k < 800; ++k)
+    input.push_back((k % 2 == 0 ? 1.0 : -1.0) * (0.95 - 0.001 * k));
+  Case c{model_document("preisach", {{"levels", 41},
+                                     {"lower", -1.0},
+                                     {"upper", 1.0},
+                                     {"weights", std::vector<double>(861, 1.0)}}),
+         -1.0, 1.0, 0, input};
+  Preisach preisach(preisach_params_of(c.document));
+  auto state = preisach.initial_state();
+  for (const double v : input)
+    preisach.step(state, v);
+  ASSERT_GT(state.truncations, 0U);  // the input does overflow the library's memory
+  compare(c, CScalar::double_precision, "-O2", 1e-12);
+}
+
+TEST_F(ExportCTest, BoucWenRk4AndExactSolution) {
+  check_everything({example_document("bouc_wen"), -3.0, 3.0}, kFloatBound);  // n = 1.5: RK4
+  auto exact = example_document("bouc_wen");
+  exact["params"]["n"] = 1.0;
+  check_everything({exact, -3.0, 3.0}, kFloatBound);
+}
+
+TEST_F(ExportCTest, NmListsTheMathFunctionsTheCodeCalls) {
+  // The symbol check of check_everything() reads nm's listing: it does see the calls there are.
+  const Case c{example_document("gpi")};
+  const auto in_double = undefined_symbols(c, CScalar::double_precision);
+  EXPECT_EQ(in_double.count("exp"), 1U);
+  EXPECT_EQ(in_double.count("atanh"), 1U);
+  const auto in_float = undefined_symbols(c, CScalar::single_precision);
+  EXPECT_EQ(in_float.count("expf"), 1U);
+  EXPECT_EQ(in_float.count("exp"), 0U);
+}
+
+TEST_F(ExportCTest, UnsupportedModelIsNamed) {
+  auto model = model_from_json(example_document("kp"), "test");
+  EXPECT_HYST_ERROR(generate_c(*model, {}), "'kp' is not supported");
+}
+
+TEST_F(ExportCTest, AdaptiveBoucWenIsRefused) {
+  auto document = example_document("bouc_wen");
+  document["params"]["tolerance"] = 1e-8;
+  auto model = model_from_json(document, "test");
+  EXPECT_HYST_ERROR(generate_c(*model, {}), "tolerance = 0");
+}
+
+TEST_F(ExportCTest, BadPrefixAndMissingFolderAreNamed) {
+  auto model = model_from_json(example_document("pi"), "test");
+  CExportOptions options;
+  options.prefix = "9lives";
+  EXPECT_HYST_ERROR(generate_c(*model, options), "must be a C identifier");
+  EXPECT_HYST_ERROR(export_c(*model, dir_ / "missing", {}), "does not exist");
+}
+
+}  // namespace
+}  // namespace hyst
