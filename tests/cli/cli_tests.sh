@@ -260,6 +260,38 @@ case_every_model() {
   done
 }
 
+case_compare() {
+  # A record simulated from the known PI model: PI with its thresholds is ranked first; a model
+  # whose fit fails (NARX on 30 samples) gets a failed row and the others still run.
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  mkdir cmp
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models narx,pi,bouc_wen \
+    --option "pi.thresholds=$KNOWN_THRESHOLDS" --option narx.max_iterations=10 \
+    --option "narx.hidden_sizes=[4]" --out-dir cmp
+  expect_stdout "| 1 | pi |" "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png"
+  for file in ranking.md ranking.csv loops.png errors.png; do
+    [ -s "cmp/$file" ] || fail "cmp/$file is missing or empty"
+  done
+  [ "$(wc -l <cmp/ranking.csv)" -eq 4 ] || fail "cmp/ranking.csv should have 3 rows"
+  grep -q '^1,pi,' cmp/ranking.csv || fail "pi is not ranked first: $(cat cmp/ranking.csv)"
+  head -n 31 data.csv >short.csv
+  run "$HYST" compare --data short.csv --input v --output y --models narx,pi --out-dir cmp
+  [ "$STATUS" -eq 0 ] || fail "compare with one failing model: exit status $STATUS"
+  grep -q "hyst: warning: model 'narx' was not fitted: NARX fit: 22 samples" "$WORK/stderr" ||
+    fail "no warning for the failed NARX fit: $(cat "$WORK/stderr")"
+  grep -q '^-,narx,failed,' cmp/ranking.csv || fail "no failed NARX row: $(cat cmp/ranking.csv)"
+  grep -q '^1,pi,' cmp/ranking.csv || fail "pi did not run: $(cat cmp/ranking.csv)"
+  expect_error 1 "--option 'pi.operators': expected MODEL.KEY=VALUE" -- \
+    "$HYST" compare --data data.csv --input v --output y --option pi.operators --out-dir cmp
+  expect_error 1 "unknown model 'nope'" -- \
+    "$HYST" compare --data data.csv --input v --output y --models pi,nope --out-dir cmp
+  expect_error 1 "--out-dir 'missing' is not an existing folder" -- \
+    "$HYST" compare --data data.csv --input v --output y --out-dir missing
+  expect_no_temporaries
+}
+
 case_simulate_round_trip() {
   # One play with r = 0 is the identity, so y = 2 v + 0.5 exactly.
   write_pi_model linear.json "[0]" "[2]" 0.5
