@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
+#include "detail/multistart_fit.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
@@ -137,8 +138,10 @@ class Network {
     deltas_.resize(total);
   }
 
-  // Output at `phi`; with `gradient` (size = weight count) also d output / d weights.
-  double evaluate(const double* weights, const double* phi, double* gradient) {
+  // Output at `phi`; with `gradient` (size = weight count) also d output / d weights, and with
+  // `input_gradient` (needs `gradient`) d output / d phi.
+  double evaluate(const double* weights, const double* phi, double* gradient,
+                  double* input_gradient = nullptr) {
     const double* w = weights;
     const double* layer_input = phi;
     std::size_t inputs = regressors_;
@@ -164,6 +167,15 @@ class Network {
     for (std::size_t m = 0; m < regressors_; ++m)
       out += linear[m] * phi[m];
     if (gradient != nullptr) backpropagate(weights, phi, gradient);
+    if (input_gradient != nullptr) {
+      // d/dphi = l + W_1^T delta_1 (the deltas of the first layer are at the front).
+      for (std::size_t m = 0; m < regressors_; ++m) {
+        double sum = linear[m];
+        for (std::size_t n = 0; n < hidden_.front(); ++n)
+          sum += weights[n * regressors_ + m] * deltas_[n];
+        input_gradient[m] = sum;
+      }
+    }
     return out;
   }
 
@@ -255,6 +267,67 @@ class BlockResiduals final : public ceres::CostFunction {
   mutable Network network_;  // scratch only; Ceres evaluates single-threaded here
 };
 
+// Free-run (simulation) residuals over the training rows: the output-lag regressors hold the
+// network's own earlier outputs, from the measured lags of the first row on. The Jacobian comes
+// from forward sensitivities (real-time recurrent learning): with S_k = d y_k / d theta,
+//     S_k = d f / d theta + sum_i (d f / d y_{k-i}) S_{k-i},
+// so one pass costs O(N n_y P) on top of the network.
+class FreeRunResiduals final : public ceres::CostFunction {
+ public:
+  FreeRunResiduals(const Rows& rows, std::size_t first_output_lag, std::size_t output_lags,
+                   std::size_t weights, const std::vector<std::size_t>& hidden)
+      : rows_(rows),
+        first_lag_(first_output_lag),
+        lags_(output_lags),
+        network_(rows.width, hidden) {
+    set_num_residuals(static_cast<int>(rows.count()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(weights));
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const auto weights = static_cast<std::size_t>(parameter_block_sizes()[0]);
+    const bool jacobian = jacobians != nullptr && jacobians[0] != nullptr;
+    std::vector<double> phi(rows_.phi.begin(),
+                            rows_.phi.begin() + static_cast<std::ptrdiff_t>(rows_.width));
+    std::vector<double> lags(phi.begin() + static_cast<std::ptrdiff_t>(first_lag_),
+                             phi.begin() + static_cast<std::ptrdiff_t>(first_lag_ + lags_));
+    std::vector<double> input_gradient(rows_.width);
+    std::vector<double> gradient(weights);
+    std::vector<double> ring(jacobian ? lags_ * weights : 0, 0.0);  // S of y_{k-1..k-n_y}
+    for (std::size_t k = 0; k < rows_.count(); ++k) {
+      std::copy_n(&rows_.phi[k * rows_.width], rows_.width, phi.begin());
+      std::copy(lags.begin(), lags.end(), phi.begin() + static_cast<std::ptrdiff_t>(first_lag_));
+      const double out =
+          network_.evaluate(parameters[0], phi.data(), jacobian ? gradient.data() : nullptr,
+                            jacobian ? input_gradient.data() : nullptr);
+      if (!std::isfinite(out)) return false;
+      residuals[k] = out - rows_.target[k];
+      if (jacobian) {
+        double* row = jacobians[0] + k * weights;
+        std::copy(gradient.begin(), gradient.end(), row);
+        for (std::size_t i = 1; i <= lags_ && i <= k; ++i) {
+          const double factor = input_gradient[first_lag_ + i - 1];
+          const double* previous = &ring[((k - i) % lags_) * weights];
+          for (std::size_t j = 0; j < weights; ++j)
+            row[j] += factor * previous[j];
+        }
+        std::copy(row, row + weights, &ring[(k % lags_) * weights]);
+      }
+      for (std::size_t i = lags_; i > 1; --i)
+        lags[i - 1] = lags[i - 2];
+      lags[0] = out;
+    }
+    return true;
+  }
+
+ private:
+  const Rows& rows_;
+  std::size_t first_lag_;
+  std::size_t lags_;
+  mutable Network network_;
+};
+
 // sqrt(weight) * theta_i for the hidden-layer weights and the output weights (not the ARX part).
 class Ridge final : public ceres::CostFunction {
  public:
@@ -317,18 +390,6 @@ void initial_weights(const Rows& rows, const Narx::Params& p, std::uint64_t seed
     weights[position++] = std::isfinite(arx[i]) ? arx[i] : 0.0;
 }
 
-Termination termination_of(const ceres::Solver::Summary& summary) {
-  switch (summary.termination_type) {
-    case ceres::CONVERGENCE:
-    case ceres::USER_SUCCESS:
-      return Termination::converged;
-    case ceres::NO_CONVERGENCE:
-      return Termination::max_iterations;
-    default:
-      return Termination::failed;
-  }
-}
-
 // Free-run error of `model` over a record part, from `state` (advanced); infinity when the run
 // diverges.
 double free_run_rmse(const Narx& model, Narx::State& state, std::span<const double> input,
@@ -355,6 +416,15 @@ class EarlyStopping final : public ceres::IterationCallback {
         output_(output),
         patience_(patience) {}
 
+  //! Continues from an earlier stage: only better than `best_error` counts as progress.
+  void start_from(std::vector<double> best, double best_error) {
+    best_ = std::move(best);
+    best_error_ = best_error;
+    stale_ = 0;
+    stopped_ = false;
+    stage_ = 2;
+  }
+
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     if (summary.iteration > 0 && !summary.step_is_successful) return ceres::SOLVER_CONTINUE;
     const double error = monitor_error();
@@ -362,6 +432,7 @@ class EarlyStopping final : public ceres::IterationCallback {
       best_error_ = error;
       best_ = weights_;
       best_iteration_ = static_cast<std::size_t>(summary.iteration);
+      best_stage_ = stage_;
       stale_ = 0;
     } else if (++stale_ >= patience_) {
       stopped_ = true;
@@ -381,6 +452,8 @@ class EarlyStopping final : public ceres::IterationCallback {
   const std::vector<double>& best() const { return best_; }
   double best_error() const { return best_error_; }
   std::size_t best_iteration() const { return best_iteration_; }
+  //! 1: one-step stage, 2: simulation-error stage.
+  std::size_t best_stage() const { return best_stage_; }
   bool stopped() const { return stopped_; }
 
  private:
@@ -393,6 +466,8 @@ class EarlyStopping final : public ceres::IterationCallback {
   std::vector<double> best_;
   double best_error_ = std::numeric_limits<double>::infinity();
   std::size_t best_iteration_ = 0;
+  std::size_t stage_ = 1;
+  std::size_t best_stage_ = 1;
   std::size_t stale_ = 0;
   bool stopped_ = false;
 };
@@ -475,19 +550,40 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
 
-  NarxFit result{Narx(shape), {}, {}, {}, {}, 0};
+  NarxFit result{Narx(shape), {}, {}, {}, {}, 0, 1};
   std::string stopping_text;
   if (stopping && !stopping->best().empty()) {
     weights = stopping->best();
     result.best_iteration = stopping->best_iteration();
-    stopping_text = fmt::format(
-        "; kept iteration {} (free-run RMSE {:.4g} on the early-stopping part){}",
-        result.best_iteration, stopping->best_error(),
-        stopping->stopped()
-            ? fmt::format(", stopped after {} iterations without improvement", options.patience)
-            : "");
-  } else {
-    result.best_iteration = summary.iterations.empty() ? 0 : summary.iterations.back().iteration;
+  }
+
+  // Stage 2: the simulation (free-run) error itself, from the stage-1 weights.
+  ceres::Solver::Summary simulation_summary;
+  const bool simulation_stage = options.simulation_iterations > 0 && shape.output_lags > 0;
+  if (simulation_stage) {
+    ceres::Problem simulation_problem(problem_options);
+    simulation_problem.AddResidualBlock(
+        new FreeRunResiduals(rows, 1 + shape.input_lags, shape.output_lags, weight_count,
+                             shape.hidden_sizes),
+        nullptr, weights.data());
+    if (options.regularization > 0.0) {
+      simulation_problem.AddResidualBlock(
+          new Ridge(weight_count, penalised_count(shape, regressors),
+                    options.regularization * static_cast<double>(rows.count())),
+          nullptr, weights.data());
+    }
+    solver.max_num_iterations = static_cast<int>(options.simulation_iterations);
+    if (stopping) stopping->start_from(weights, stopping->best_error());
+    ceres::Solve(solver, &simulation_problem, &simulation_summary);
+    if (stopping && !stopping->best().empty()) weights = stopping->best();
+  }
+  if (stopping) {
+    result.best_iteration = stopping->best_iteration();
+    result.best_stage = stopping->best_stage();
+    stopping_text =
+        fmt::format("; kept {} iteration {} (free-run RMSE {:.4g} on the early-stopping part)",
+                    stopping->best_stage() == 2 ? "simulation-error" : "one-step",
+                    stopping->best_iteration(), stopping->best_error());
   }
   shape.weights = weights;
   result.model = Narx(shape);
@@ -496,10 +592,15 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   auto& report = result.report;
   report.model = "narx";
   report.method =
-      "levenberg-marquardt (ceres, one-step-ahead prediction error, backpropagated Jacobian)" +
+      "levenberg-marquardt (ceres): one-step-ahead prediction error (backpropagated Jacobian)" +
+      std::string(simulation_stage ? ", then simulation error (forward sensitivities)" : "") +
       std::string(monitor > 0 ? ", early stopping on the free-run error" : "");
-  report.termination = termination_of(summary);
-  report.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
+  const auto& last = simulation_stage ? simulation_summary : summary;
+  report.termination = detail::termination_of_ceres(last);
+  report.iterations = (summary.iterations.empty() ? 0 : summary.iterations.size() - 1) +
+                      (simulation_stage && !simulation_summary.iterations.empty()
+                           ? simulation_summary.iterations.size() - 1
+                           : 0);
   report.initial_cost = initial_cost;
   report.final_cost = one_step_cost(rows, shape, weights);
   report.parameters = weight_count;

@@ -111,6 +111,8 @@ NarxFitOptions fit_options_from_json(const FitRequest& request) {
   if (fields.has("hidden_sizes")) options.hidden_sizes = sizes(fields, "hidden_sizes");
   options.seed = fields.count_or("seed", options.seed);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
+  options.simulation_iterations =
+      fields.count_or("simulation_iterations", options.simulation_iterations);
   options.patience = fields.count_or("patience", options.patience);
   options.early_stopping_fraction =
       fields.number_or("early_stopping_fraction", options.early_stopping_fraction);
@@ -157,6 +159,8 @@ ModelEntry narx_entry() {
       {"hidden_sizes", "array of whole numbers", "", "hidden layer sizes ([8])"},
       {"seed", "whole number", "", "seed of the initial weights (1)"},
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
+      {"simulation_iterations", "whole number", "",
+       "LM iterations on the free-run error after the one-step fit (20)"},
       {"patience", "whole number", "", "early stopping: iterations without improvement (15)"},
       {"early_stopping_fraction", "number", "", "end of the fit part monitored in free run (0.2)"},
       {"regularization", "number", "", "ridge weight on the network weights (1e-6)"},

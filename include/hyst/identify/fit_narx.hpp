@@ -12,6 +12,12 @@
 //! (Glorot) distribution by a std::mt19937_64 seeded with `seed` - the same seed and data give
 //! the same model. Ceres runs single-threaded, so the result is reproducible bit for bit.
 //!
+//! Then (simulation_iterations > 0 and n_y > 0) the same weights are refined on the simulation
+//! error itself - the free run over the training rows from their first measured lags - with the
+//! Jacobian by forward sensitivities (real-time recurrent learning), S_k = d y_k / d theta =
+//! d f / d theta + sum_i (d f / d y_{k-i}) S_{k-i}. One-step training alone weighs the noise in
+//! the measured lags like signal and can give a model that drifts in free run.
+//!
 //! Early stopping: the last `early_stopping_fraction` of the fit part is not trained on; after
 //! every iteration the model is run there in free run (its own past outputs, started from the
 //! measured history) and the parameters with the lowest free-run error are kept. The iteration
@@ -45,10 +51,12 @@ struct NarxFitOptions {
   std::vector<double> play_thresholds;       //!< given thresholds [input units]
   std::vector<std::size_t> hidden_sizes{8};  //!< one or two hidden layers
   std::uint64_t seed = 1;                    //!< initial network weights
-  std::size_t max_iterations = 100;          //!< Levenberg-Marquardt iterations (>= 1)
-  std::size_t patience = 15;                 //!< early stopping (>= 1)
-  double early_stopping_fraction = 0.2;      //!< of the fit part, [0, 0.9]; 0: none
-  double regularization = 1e-6;              //!< lambda >= 0 (normalised units)
+  std::size_t max_iterations = 100;          //!< one-step LM iterations (>= 1)
+  //! LM iterations on the simulation (free-run) error after the one-step stage; 0: none.
+  std::size_t simulation_iterations = 20;
+  std::size_t patience = 15;             //!< early stopping (>= 1)
+  double early_stopping_fraction = 0.2;  //!< of the fit part, [0, 0.9]; 0: none
+  double regularization = 1e-6;          //!< lambda >= 0 (normalised units)
   //! Fraction of the record, at its end, held out for validation (data_split.hpp); [0, 1).
   double validate_fraction = 0.0;
 };
@@ -60,6 +68,7 @@ struct NarxFit {
   ErrorMetrics one_step_fit;  //!< one-step-ahead error on the fit part
   std::optional<ErrorMetrics> one_step_validation;
   std::size_t best_iteration = 0;  //!< the iteration whose parameters were kept (0: the start)
+  std::size_t best_stage = 1;      //!< its stage: 1 one-step, 2 simulation error
 };
 
 //! Fits one record, optionally holding out its last part for validation. Throws hyst::Error for
