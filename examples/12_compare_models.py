@@ -27,7 +27,7 @@ best = comparison.ranking[0]
 print(f"best: {best.model} (validation NRMSE {best.validation.nrmse:.3g})")
 
 # The NARX model alone: fitted by name, saved and simulated like every model.
-narx, report = hyst.fit("narx", v, y, validate_fraction=0.25, hidden_sizes=[6],
+narx, report = hyst.fit("narx", v[:1200], y[:1200], v[1200:], y[1200:], hidden_sizes=[6],
                         max_iterations=30)
 print(report.brief())
 sys.exit(0 if best.model == "bouc_wen" and best.ok else 1)

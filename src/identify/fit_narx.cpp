@@ -426,8 +426,9 @@ class EarlyStopping final : public ceres::IterationCallback {
   }
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    if (summary.iteration > 0 && !summary.step_is_successful) return ceres::SOLVER_CONTINUE;
-    const double error = monitor_error();
+    // A rejected step leaves the weights as they were: no improvement, nothing to evaluate.
+    const bool moved = summary.iteration == 0 || summary.step_is_successful;
+    const double error = moved ? monitor_error() : best_error_;
     if (error < best_error_) {
       best_error_ = error;
       best_ = weights_;
@@ -595,8 +596,10 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
       "levenberg-marquardt (ceres): one-step-ahead prediction error (backpropagated Jacobian)" +
       std::string(simulation_stage ? ", then simulation error (forward sensitivities)" : "") +
       std::string(monitor > 0 ? ", early stopping on the free-run error" : "");
-  const auto& last = simulation_stage ? simulation_summary : summary;
-  report.termination = detail::termination_of_ceres(last);
+  const ceres::Solver::Summary& last = simulation_stage ? simulation_summary : summary;
+  // Early stopping that ended the last stage is the method's own stopping rule: converged.
+  report.termination =
+      stopping && stopping->stopped() ? Termination::converged : detail::termination_of_ceres(last);
   report.iterations = (summary.iterations.empty() ? 0 : summary.iterations.size() - 1) +
                       (simulation_stage && !simulation_summary.iterations.empty()
                            ? simulation_summary.iterations.size() - 1
@@ -644,8 +647,13 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
                                                     validation_input, validation_output));
   }
   report.message =
-      fmt::format("{}{}; one-step-ahead RMSE {:.4g} (fit){}", summary.message, stopping_text,
-                  result.one_step_fit.rmse,
+      fmt::format("{}{}; one-step-ahead RMSE {:.4g} (fit){}",
+                  stopping && stopping->stopped()
+                      ? fmt::format("free-run error on the early-stopping part not improved for "
+                                    "{} iterations",
+                                    options.patience)
+                      : last.message,
+                  stopping_text, result.one_step_fit.rmse,
                   result.one_step_validation
                       ? fmt::format(", {:.4g} (validation)", result.one_step_validation->rmse)
                       : "");

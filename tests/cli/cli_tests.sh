@@ -292,6 +292,35 @@ case_compare() {
   expect_no_temporaries
 }
 
+case_compare_html() {
+  # The --html page, rendered by headless Chromium: the ranking table and both SVG figures are
+  # in the document the browser built.
+  if ! command -v chromium >/dev/null; then
+    echo "SKIP: chromium not installed (Debian package chromium)"
+    exit 77
+  fi
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  mkdir cmp
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models pi,bouc_wen \
+    --option "pi.thresholds=$KNOWN_THRESHOLDS" --out-dir cmp --no-plots --html cmp/report.html
+  expect_stdout "; cmp/report.html"
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom "file://$WORK/cmp/report.html" \
+    >dom.html 2>chromium.log || fail "chromium failed: $(tail -n 5 chromium.log)"
+  grep -q '<table id="ranking">' dom.html || fail "no ranking table in the rendered page"
+  [ "$(grep -o '<tr class="fitted">' dom.html | wc -l)" -eq 2 ] || fail "the table should show 2 fitted models"
+  [ "$(grep -o '<svg ' dom.html | wc -l)" -eq 2 ] || fail "the page should show 2 SVG figures"
+  for id in loops errors; do
+    grep -q "<figure id=\"$id\">" dom.html || fail "figure '$id' missing in the rendered page"
+  done
+  # Loops: measured, pi, bouc_wen; errors: pi, bouc_wen.
+  [ "$(grep -o '<polyline class="series"' dom.html | wc -l)" -eq 5 ] || fail "expected 5 curves"
+  expect_error 1 "--html 'missing/r.html': the folder 'missing' does not exist" -- \
+    "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
+    --html missing/r.html
+}
+
 case_simulate_round_trip() {
   # One play with r = 0 is the identity, so y = 2 v + 0.5 exactly.
   write_pi_model linear.json "[0]" "[2]" 0.5

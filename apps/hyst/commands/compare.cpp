@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "hyst/identify/compare.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
 namespace hyst::cli {
@@ -32,6 +33,7 @@ struct CompareCommandOptions {
   std::string out_dir;
   std::optional<std::size_t> table;
   bool no_plots = false;
+  std::string html;
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -81,6 +83,7 @@ void run(const CompareCommandOptions& options) {
   if (!std::filesystem::is_directory(folder)) {
     throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
   }
+  if (!options.html.empty()) check_output_folder(options.html, "--html");
   const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
   const auto comparison = compare_models(record.input, record.output, compare);
@@ -99,6 +102,12 @@ void run(const CompareCommandOptions& options) {
     written = fmt::format("{}, {}, {} and {}", (folder / "ranking.md").string(),
                           (folder / "ranking.csv").string(), (folder / "loops.png").string(),
                           (folder / "errors.png").string());
+  }
+  if (!options.html.empty()) {
+    plot::write_model_comparison_html(options.html, comparison, record.input, record.output,
+                                      fmt::format("Model comparison: {} -> {} ({})", options.input,
+                                                  options.output, options.data));
+    written += fmt::format("; {}", options.html);
   }
   fmt::print("wrote {}\n", written);
   for (const auto& row : comparison.ranking) {
@@ -134,6 +143,8 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
+  command->add_option("--html", options->html,
+                      "Also write one self-contained HTML page with the table and SVG plots");
   command->footer(R"(Examples:
   hyst compare --data d.csv --input v --output y --out-dir cmp
   hyst compare --data d.csv --input v --output y --models pi,gpi,narx \
