@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "hyst/identify/compare.hpp"
+#include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
 namespace hyst::python {
@@ -48,7 +49,16 @@ void bind_compare(py::module_& module) {
                                                as_span(output, "output"), loop_png, error_png);
           },
           "input"_a, "output"_a, "loop_png"_a, "error_png"_a,
-          "Writes the loops of the held-out part and the error time series as PNG (gnuplot).");
+          "Writes the loops of the held-out part and the error time series as PNG (gnuplot).")
+      .def(
+          "html",
+          [](const ModelComparison& comparison, const InputArray& input, const InputArray& output,
+             const std::string& title) {
+            return plot::model_comparison_html(comparison, as_span(input, "input"),
+                                               as_span(output, "output"), title);
+          },
+          "input"_a, "output"_a, "title"_a = "Model comparison",
+          "One self-contained HTML page: the ranking table and both figures as inline SVG.");
 
   module.def(
       "compare",

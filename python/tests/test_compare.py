@@ -42,6 +42,8 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     assert repr(best).startswith("ComparedModel(model='pi'")
     assert "| 1 | pi |" in comparison.markdown()
     assert comparison.csv().startswith("rank,model,status")
+    page = comparison.html(v, y, title="PI & NARX")
+    assert "<h1>PI &amp; NARX</h1>" in page and page.count("<svg ") == 2
     if shutil.which("gnuplot"):
         comparison.write_plots(v, y, tmp_path / "loops.png", tmp_path / "errors.png")
         assert (tmp_path / "loops.png").stat().st_size > 0
