@@ -44,7 +44,8 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
       "<style>body{{font-family:sans-serif;margin:2em}}table{{border-collapse:collapse}}"
       "td,th{{border:1px solid #aaa;padding:3px 8px;text-align:right}}"
       "td:nth-child(2),td:last-child{{text-align:left}}tr.failed{{color:#a00}}"
-      "figure{{margin:1.5em 0}}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
+      "figure{{margin:1.5em "
+      "0}}h1{{overflow-wrap:anywhere}}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
       "<p>Every model was fitted on samples {1}..{2} and run in free run over the whole record; "
       "the ranking is by the NRMSE on the held-out samples {3}..{4}.</p>\n",
       xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
