@@ -283,6 +283,9 @@ case_compare() {
     fail "no warning for the failed NARX fit: $(cat "$WORK/stderr")"
   grep -q '^-,narx,failed,' cmp/ranking.csv || fail "no failed NARX row: $(cat cmp/ranking.csv)"
   grep -q '^1,pi,' cmp/ranking.csv || fail "pi did not run: $(cat cmp/ranking.csv)"
+  # Without --out-dir: the current folder.
+  expect_ok "$HYST" compare --data short.csv --input v --output y --models pi --no-plots
+  [ -s ranking.md ] && [ -s ranking.csv ] || fail "no ranking.md / ranking.csv in the current folder"
   expect_error 1 "--option 'pi.operators': expected MODEL.KEY=VALUE" -- \
     "$HYST" compare --data data.csv --input v --output y --option pi.operators --out-dir cmp
   expect_error 1 "unknown model 'nope'" -- \

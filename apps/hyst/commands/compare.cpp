@@ -30,7 +30,7 @@ struct CompareCommandOptions {
   std::string models;
   double validate_fraction = 0.25;
   std::vector<std::string> option_pairs;
-  std::string out_dir;
+  std::string out_dir = ".";
   std::optional<std::size_t> table;
   bool no_plots = false;
   std::string html;
@@ -127,10 +127,9 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--input", options->input, "Input column (variable) of --data")->required();
   command->add_option("--output", options->output, "Output column (variable) of --data")
       ->required();
-  command
-      ->add_option("--out-dir", options->out_dir,
-                   "Folder for ranking.md, ranking.csv, loops.png and errors.png")
-      ->required();
+  command->add_option("--out-dir", options->out_dir,
+                      "Folder for ranking.md, ranking.csv, loops.png and errors.png (default: the "
+                      "current folder)");
   command->add_option("--models", options->models,
                       "Comma-separated model names (default: every model with a fitter)");
   command->add_option("--validate-fraction", options->validate_fraction,
@@ -146,7 +145,8 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--html", options->html,
                       "Also write one self-contained HTML page with the table and SVG plots");
   command->footer(R"(Examples:
-  hyst compare --data d.csv --input v --output y --out-dir cmp
+  hyst compare --data d.csv --input v --output y
+  hyst compare --data d.csv --input v --output y --out-dir cmp --html cmp/report.html
   hyst compare --data d.csv --input v --output y --models pi,gpi,narx \
       --option narx.hidden_sizes=[6] --out-dir cmp
 Every model is fitted on the first part of the record and run in free run over the whole
