@@ -49,6 +49,7 @@ int parse_and_run(int argc, const char* const* argv) {
   hyst models pi                                parameters, fit options, an example model file
   hyst fit pi --data d.csv --input v --output y --out m.json --validate-fraction 0.2
   hyst simulate --model m.json --input v.csv --out y.csv
+  hyst compare --data d.csv --input v --output y --out-dir cmp   rank the models
   hyst invert --model m.json --target y.csv --out v.csv --input-min -10 --input-max 10
   hyst plot --data d.csv --x v --y y --kind loop --model m.json --out loop.png
   hyst info m.json
@@ -65,6 +66,7 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   add_actuator_command(app);
   add_data_command(app);
   add_export_command(app);
+  add_compare_command(app);
 
   try {
     app.parse(argc, argv);

@@ -51,5 +51,6 @@ void bind_identify(py::module_& module);
 void bind_registry(py::module_& module);
 void bind_actuator(py::module_& module);
 void bind_data(py::module_& module);
+void bind_compare(py::module_& module);
 
 }  // namespace hyst::python

@@ -184,4 +184,5 @@ PYBIND11_MODULE(hyst, module) {
   hyst::python::bind_registry(module);
   hyst::python::bind_actuator(module);
   hyst::python::bind_data(module);
+  hyst::python::bind_compare(module);
 }

@@ -28,6 +28,7 @@ ModelEntry bouc_wen_oscillator_entry();
 ModelEntry duhem_entry();
 ModelEntry backlash_like_entry();
 ModelEntry jiles_atherton_entry();
+ModelEntry narx_entry();
 
 // The validated-by-shape parameters of a model file's "params" object (unknown fields rejected;
 // messages name the path, e.g. "hysteresis.params.rho"), for code that builds the concrete model.

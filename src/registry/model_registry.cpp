@@ -25,6 +25,7 @@ const ModelRegistry& ModelRegistry::builtin() {
     r.add(detail::duhem_entry());
     r.add(detail::backlash_like_entry());
     r.add(detail::jiles_atherton_entry());
+    r.add(detail::narx_entry());
     return r;
   }();
   return registry;

@@ -260,6 +260,70 @@ case_every_model() {
   done
 }
 
+case_compare() {
+  # A record simulated from the known PI model: PI with its thresholds is ranked first; a model
+  # whose fit fails (NARX on 30 samples) gets a failed row and the others still run.
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  mkdir cmp
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models narx,pi,bouc_wen \
+    --option "pi.thresholds=$KNOWN_THRESHOLDS" --option narx.max_iterations=10 \
+    --option "narx.hidden_sizes=[4]" --out-dir cmp
+  expect_stdout "| 1 | pi |" "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png"
+  for file in ranking.md ranking.csv loops.png errors.png; do
+    [ -s "cmp/$file" ] || fail "cmp/$file is missing or empty"
+  done
+  [ "$(wc -l <cmp/ranking.csv)" -eq 4 ] || fail "cmp/ranking.csv should have 3 rows"
+  grep -q '^1,pi,' cmp/ranking.csv || fail "pi is not ranked first: $(cat cmp/ranking.csv)"
+  head -n 31 data.csv >short.csv
+  run "$HYST" compare --data short.csv --input v --output y --models narx,pi --out-dir cmp
+  [ "$STATUS" -eq 0 ] || fail "compare with one failing model: exit status $STATUS"
+  grep -q "hyst: warning: model 'narx' was not fitted: NARX fit: 22 samples" "$WORK/stderr" ||
+    fail "no warning for the failed NARX fit: $(cat "$WORK/stderr")"
+  grep -q '^-,narx,failed,' cmp/ranking.csv || fail "no failed NARX row: $(cat cmp/ranking.csv)"
+  grep -q '^1,pi,' cmp/ranking.csv || fail "pi did not run: $(cat cmp/ranking.csv)"
+  # Without --out-dir: the current folder.
+  expect_ok "$HYST" compare --data short.csv --input v --output y --models pi --no-plots
+  [ -s ranking.md ] && [ -s ranking.csv ] || fail "no ranking.md / ranking.csv in the current folder"
+  expect_error 1 "--option 'pi.operators': expected MODEL.KEY=VALUE" -- \
+    "$HYST" compare --data data.csv --input v --output y --option pi.operators --out-dir cmp
+  expect_error 1 "unknown model 'nope'" -- \
+    "$HYST" compare --data data.csv --input v --output y --models pi,nope --out-dir cmp
+  expect_error 1 "--out-dir 'missing' is not an existing folder" -- \
+    "$HYST" compare --data data.csv --input v --output y --out-dir missing
+  expect_no_temporaries
+}
+
+case_compare_html() {
+  # The --html page, rendered by headless Chromium: the ranking table and both SVG figures are
+  # in the document the browser built.
+  if ! command -v chromium >/dev/null; then
+    echo "SKIP: chromium not installed (Debian package chromium)"
+    exit 77
+  fi
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  mkdir cmp
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models pi,bouc_wen \
+    --option "pi.thresholds=$KNOWN_THRESHOLDS" --out-dir cmp --no-plots --html cmp/report.html
+  expect_stdout "; cmp/report.html"
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom "file://$WORK/cmp/report.html" \
+    >dom.html 2>chromium.log || fail "chromium failed: $(tail -n 5 chromium.log)"
+  grep -q '<table id="ranking">' dom.html || fail "no ranking table in the rendered page"
+  [ "$(grep -o '<tr class="fitted">' dom.html | wc -l)" -eq 2 ] || fail "the table should show 2 fitted models"
+  [ "$(grep -o '<svg ' dom.html | wc -l)" -eq 2 ] || fail "the page should show 2 SVG figures"
+  for id in loops errors; do
+    grep -q "<figure id=\"$id\">" dom.html || fail "figure '$id' missing in the rendered page"
+  done
+  # Loops: measured, pi, bouc_wen; errors: pi, bouc_wen.
+  [ "$(grep -o '<polyline class="series"' dom.html | wc -l)" -eq 5 ] || fail "expected 5 curves"
+  expect_error 1 "--html 'missing/r.html': the folder 'missing' does not exist" -- \
+    "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
+    --html missing/r.html
+}
+
 case_simulate_round_trip() {
   # One play with r = 0 is the identity, so y = 2 v + 0.5 exactly.
   write_pi_model linear.json "[0]" "[2]" 0.5

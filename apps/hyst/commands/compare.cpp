@@ -1,0 +1,158 @@
+// hyst compare: fits several models to the same record and ranks them on the same held-out part
+// (the logic is hyst::compare_models, identify/compare.hpp); writes the ranking as Markdown and
+// CSV and the comparison plots.
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "../data_source.hpp"
+#include "commands.hpp"
+#include "hyst/identify/compare.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/plot/comparison_html.hpp"
+#include "hyst/plot/comparison_plots.hpp"
+
+namespace hyst::cli {
+namespace {
+
+struct CompareCommandOptions {
+  std::string data;
+  std::string input;
+  std::string output;
+  std::string models;
+  double validate_fraction = 0.25;
+  std::vector<std::string> option_pairs;
+  std::string out_dir = ".";
+  std::optional<std::size_t> table;
+  bool no_plots = false;
+  std::string html;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto comma = std::min(text.find(',', start), text.size());
+    const auto item = text.substr(start, comma - start);
+    if (item.empty()) {
+      throw Error(
+          fmt::format("--models '{}': an empty model name (expected e.g. pi,gpi,narx)", text));
+    }
+    items.push_back(item);
+    start = comma + 1;
+  }
+  return items;
+}
+
+//! --option MODEL.KEY=VALUE, the value JSON when it parses as JSON, else a string.
+std::map<std::string, nlohmann::json> fit_options(const std::vector<std::string>& pairs) {
+  std::map<std::string, nlohmann::json> options;
+  for (const auto& pair : pairs) {
+    const auto dot = pair.find('.');
+    const auto equals = pair.find('=');
+    if (dot == std::string::npos || equals == std::string::npos || dot == 0 || dot > equals ||
+        equals == dot + 1) {
+      throw Error(
+          fmt::format("--option '{}': expected MODEL.KEY=VALUE, e.g. pi.operators=12", pair));
+    }
+    const auto model = pair.substr(0, dot);
+    const auto key = pair.substr(dot + 1, equals - dot - 1);
+    const auto text = pair.substr(equals + 1);
+    auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    auto& object = options[model];
+    if (object.is_null()) object = nlohmann::json::object();
+    object[key] = value.is_discarded() ? nlohmann::json(text) : value;
+  }
+  return options;
+}
+
+void run(const CompareCommandOptions& options) {
+  CompareOptions compare;
+  if (!options.models.empty()) compare.models = split_list(options.models);
+  compare.validate_fraction = options.validate_fraction;
+  compare.fit_options = fit_options(options.option_pairs);
+  const std::filesystem::path folder = options.out_dir;
+  if (!std::filesystem::is_directory(folder)) {
+    throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
+  }
+  if (!options.html.empty()) check_output_folder(options.html, "--html");
+  const DataSource data(options.data, options.table);
+  const auto record = read_column_pair(data, options.input, options.output, "data");
+  const auto comparison = compare_models(record.input, record.output, compare);
+
+  const auto markdown = model_comparison_markdown(comparison);
+  io::write_file_atomically(folder / "ranking.md", markdown);
+  io::write_file_atomically(folder / "ranking.csv", model_comparison_csv(comparison));
+  fmt::print("{}", markdown);
+  std::string written =
+      fmt::format("{} and {}", (folder / "ranking.md").string(), (folder / "ranking.csv").string());
+  const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
+                                      [](const ComparedModel& row) { return row.ok; });
+  if (!options.no_plots && any_fitted) {
+    plot::write_model_comparison_plots(comparison, record.input, record.output,
+                                       folder / "loops.png", folder / "errors.png");
+    written = fmt::format("{}, {}, {} and {}", (folder / "ranking.md").string(),
+                          (folder / "ranking.csv").string(), (folder / "loops.png").string(),
+                          (folder / "errors.png").string());
+  }
+  if (!options.html.empty()) {
+    plot::write_model_comparison_html(options.html, comparison, record.input, record.output,
+                                      fmt::format("Model comparison: {} -> {} ({})", options.input,
+                                                  options.output, options.data));
+    written += fmt::format("; {}", options.html);
+  }
+  fmt::print("wrote {}\n", written);
+  for (const auto& row : comparison.ranking) {
+    if (!row.ok) warn(fmt::format("model '{}' was not fitted: {}", row.model, row.error));
+  }
+  if (!any_fitted) throw Error("no model could be fitted to the data (see the table)");
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto options = std::make_shared<CompareCommandOptions>();
+  auto* command = app.add_subcommand(
+      "compare", "Fit several models to the same data and rank them on the same held-out part.");
+  command->add_option("--data", options->data, "Measured data: CSV, or a MATLAB .mat file")
+      ->required();
+  command->add_option("--input", options->input, "Input column (variable) of --data")->required();
+  command->add_option("--output", options->output, "Output column (variable) of --data")
+      ->required();
+  command->add_option("--out-dir", options->out_dir,
+                      "Folder for ranking.md, ranking.csv, loops.png and errors.png (default: the "
+                      "current folder)");
+  command->add_option("--models", options->models,
+                      "Comma-separated model names (default: every model with a fitter)");
+  command->add_option("--validate-fraction", options->validate_fraction,
+                      "Last fraction of the record held out for the ranking (default 0.25)");
+  command
+      ->add_option("--option", options->option_pairs,
+                   "A fit option of one model, MODEL.KEY=VALUE (repeatable), e.g. "
+                   "pi.operators=12")
+      ->allow_extra_args(false);
+  command->add_option("--table", options->table,
+                      "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
+  command->add_flag("--no-plots", options->no_plots, "Write the tables only");
+  command->add_option("--html", options->html,
+                      "Also write one self-contained HTML page with the table and SVG plots");
+  command->footer(R"(Examples:
+  hyst compare --data d.csv --input v --output y
+  hyst compare --data d.csv --input v --output y --out-dir cmp --html cmp/report.html
+  hyst compare --data d.csv --input v --output y --models pi,gpi,narx \
+      --option narx.hidden_sizes=[6] --out-dir cmp
+Every model is fitted on the first part of the record and run in free run over the whole
+record; the ranking is by the NRMSE on the held-out last part. A model whose fit fails gets
+a row with the reason; the others still run.)");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace hyst::cli

@@ -1,0 +1,79 @@
+"""Model comparison and the NARX model from Python: hyst.compare ranks a PI record with PI first,
+reports a failing fit per model, and hyst.fit("narx", ...) gives a model that simulates and
+saves like every other."""
+
+import shutil
+
+import numpy as np
+import pytest
+
+import hyst
+
+THRESHOLDS = [0.0, 0.3, 0.7, 1.1]
+
+
+def random_walk(samples: int, seed: int) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    v = np.cumsum(rng.uniform(-0.2, 0.2, samples))
+    return np.clip(v, -2.0, 2.0)
+
+
+def pi_record(samples: int, seed: int):
+    v = random_walk(samples, seed)
+    model = hyst.PrandtlIshlinskii(THRESHOLDS, [0.8, 0.5, 0.3, 0.2])
+    return v, model.simulate(v)
+
+
+def test_compare_ranks_the_generating_model_first(tmp_path):
+    v, y = pi_record(1000, 1)
+    comparison = hyst.compare(v, y, ["narx", "pi"], validate_fraction=0.3,
+                              options={"pi": {"thresholds": THRESHOLDS},
+                                       "narx": {"hidden_sizes": [3], "max_iterations": 10}},
+                              timing_seconds=0.0)
+    assert isinstance(comparison, hyst.ModelComparison)
+    assert comparison.split.validation_begin == 700
+    best = comparison.ranking[0]
+    assert isinstance(best, hyst.ComparedModel)
+    assert best.model == "pi" and best.ok and best.error == ""
+    assert best.validation.nrmse < 1e-9
+    assert best.parameters == 5 and best.fit_seconds >= 0 and best.ns_per_sample > 0
+    assert best.report.model == "pi"
+    assert len(best.simulated) == len(v)
+    assert repr(best).startswith("ComparedModel(model='pi'")
+    assert "| 1 | pi |" in comparison.markdown()
+    assert comparison.csv().startswith("rank,model,status")
+    page = comparison.html(v, y, title="PI & NARX")
+    assert "<h1>PI &amp; NARX</h1>" in page and page.count("<svg ") == 2
+    if shutil.which("gnuplot"):
+        comparison.write_plots(v, y, tmp_path / "loops.png", tmp_path / "errors.png")
+        assert (tmp_path / "loops.png").stat().st_size > 0
+        assert (tmp_path / "errors.png").stat().st_size > 0
+
+
+def test_compare_reports_a_failing_fit_and_runs_the_others():
+    v, y = pi_record(40, 2)
+    comparison = hyst.compare(v, y, ["narx", "pi"], timing_seconds=0.0)
+    pi, narx = comparison.ranking
+    assert pi.ok and pi.model == "pi"
+    assert not narx.ok and "too few for" in narx.error and narx.report is None
+    assert len(narx.simulated) == 0
+    assert "failed" in repr(narx)
+    with pytest.raises(hyst.Error, match="listed twice"):
+        hyst.compare(v, y, ["pi", "pi"])
+
+
+def test_narx_fits_simulates_and_round_trips(tmp_path):
+    v = random_walk(1500, 3)
+    play = np.zeros_like(v)
+    state = 0.0
+    for k, x in enumerate(v):
+        state = max(x - 0.4, min(x + 0.4, state))
+        play[k] = state
+    y = np.tanh(1.2 * play) + 0.1 * v
+    model, report = hyst.fit("narx", v, y, play_thresholds=[0.4], hidden_sizes=[3],
+                             input_lags=0, output_lags=0, max_iterations=40)
+    assert report.model == "narx" and report.fit.nrmse < 0.01
+    path = tmp_path / "narx.json"
+    hyst.save_model(path, model)
+    loaded = hyst.load_model(path)
+    np.testing.assert_array_equal(loaded.simulate(v), model.simulate(v))

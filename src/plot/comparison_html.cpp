@@ -1,0 +1,72 @@
+#include "hyst/plot/comparison_html.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/plot/comparison_plots.hpp"
+#include "hyst/plot/svg.hpp"
+
+namespace hyst::plot {
+namespace {
+
+std::string table(const ModelComparison& comparison) {
+  std::string html =
+      "<table id=\"ranking\">\n<thead><tr><th>rank</th><th>model</th><th>validation NRMSE</th>"
+      "<th>validation RMSE</th><th>max error</th><th>parameters</th><th>fit time [s]</th>"
+      "<th>simulation [ns/sample]</th><th>status</th></tr></thead>\n<tbody>\n";
+  std::size_t rank = 0;
+  for (const auto& row : comparison.ranking) {
+    if (row.ok) {
+      html += fmt::format(
+          "<tr class=\"fitted\"><td>{}</td><td>{}</td><td>{:.4g}</td><td>{:.4g}</td><td>{:.4g}"
+          "</td><td>{}</td><td>{:.3g}</td><td>{:.3g}</td><td>{}</td></tr>\n",
+          ++rank, xml_escaped(row.model), row.validation.nrmse, row.validation.rmse,
+          row.validation.max_error, row.parameters, row.fit_seconds, row.ns_per_sample,
+          xml_escaped(to_string(row.report->termination)));
+    } else {
+      html += fmt::format(
+          "<tr class=\"failed\"><td>-</td><td>{}</td><td colspan=\"6\"></td><td>failed: {}</td>"
+          "</tr>\n",
+          xml_escaped(row.model), xml_escaped(row.error));
+    }
+  }
+  return html + "</tbody>\n</table>\n";
+}
+
+}  // namespace
+
+std::string model_comparison_html(const ModelComparison& comparison, std::span<const double> input,
+                                  std::span<const double> output, const std::string& title) {
+  std::string html = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{0}</title>\n"
+      "<style>body{{font-family:sans-serif;margin:2em}}table{{border-collapse:collapse}}"
+      "td,th{{border:1px solid #aaa;padding:3px 8px;text-align:right}}"
+      "td:nth-child(2),td:last-child{{text-align:left}}tr.failed{{color:#a00}}"
+      "figure{{margin:1.5em "
+      "0}}h1{{overflow-wrap:anywhere}}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
+      "<p>Every model was fitted on samples {1}..{2} and run in free run over the whole record; "
+      "the ranking is by the NRMSE on the held-out samples {3}..{4}.</p>\n",
+      xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
+      comparison.split.validation_begin, comparison.split.validation_end - 1);
+  html += table(comparison);
+  const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
+                                      [](const ComparedModel& row) { return row.ok; });
+  if (any_fitted) {
+    html += "<figure id=\"loops\">\n" +
+            svg(model_comparison_loop_figure(comparison, input, output)) +
+            "<figcaption>Held-out part: measured and simulated loops.</figcaption>\n</figure>\n";
+    html += "<figure id=\"errors\">\n" + svg(model_comparison_error_figure(comparison, output)) +
+            "<figcaption>Held-out part: error measured - simulated.</figcaption>\n</figure>\n";
+  }
+  return html + "</body>\n</html>\n";
+}
+
+void write_model_comparison_html(const std::filesystem::path& path,
+                                 const ModelComparison& comparison, std::span<const double> input,
+                                 std::span<const double> output, const std::string& title) {
+  io::write_file_atomically(path, model_comparison_html(comparison, input, output, title));
+}
+
+}  // namespace hyst::plot

@@ -1,0 +1,144 @@
+// Model comparison: a record simulated from a known model is ranked with that model first; a
+// model whose fit fails gets a row with the reason and the others still run; the tables.
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/expect_error.hpp"
+#include "../support/test_signals.hpp"
+#include "hyst/core/simulate.hpp"
+#include "hyst/identify/compare.hpp"
+#include "hyst/models/bouc_wen.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+
+namespace hyst {
+namespace {
+
+const std::vector<double> kThresholds = {0.0, 0.3, 0.7, 1.1};
+
+std::vector<double> pi_output(const std::vector<double>& v) {
+  const PrandtlIshlinskii model({.thresholds = kThresholds, .weights = {0.8, 0.5, 0.3, 0.2}});
+  auto state = model.initial_state();
+  return simulate(model, state, v);
+}
+
+const ComparedModel& row_of(const ModelComparison& comparison, const std::string& model) {
+  const auto found = std::find_if(comparison.ranking.begin(), comparison.ranking.end(),
+                                  [&](const ComparedModel& row) { return row.model == model; });
+  EXPECT_NE(found, comparison.ranking.end()) << model;
+  return *found;
+}
+
+TEST(CompareModels, PiRecordRanksPiFirst) {
+  const auto v = test::random_walk(1200, 5);
+  const auto y = pi_output(v);
+  CompareOptions options;
+  options.models = {"bouc_wen", "narx", "pi"};
+  options.fit_options["pi"] = {{"thresholds", kThresholds}};
+  options.fit_options["narx"] = {{"hidden_sizes", {4}}, {"max_iterations", 20}};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, y, options);
+  ASSERT_EQ(comparison.ranking.size(), 3u);
+  EXPECT_EQ(comparison.split.validation_size(), 300u);
+  for (const auto& row : comparison.ranking) {
+    SCOPED_TRACE(row.model + ": " + row.error);
+    EXPECT_TRUE(row.ok);
+    EXPECT_EQ(row.simulated.size(), v.size());
+    EXPECT_GT(row.ns_per_sample, 0.0);
+    EXPECT_GT(row.parameters, 0u);
+  }
+  // The generating model with its own thresholds reproduces the record to rounding.
+  EXPECT_EQ(comparison.ranking.front().model, "pi");
+  EXPECT_LT(comparison.ranking.front().validation.nrmse, 1e-9);
+  EXPECT_EQ(comparison.ranking.front().parameters, 5u);  // 4 weights and the offset
+  EXPECT_LE(comparison.ranking[1].validation.nrmse, comparison.ranking[2].validation.nrmse);
+}
+
+TEST(CompareModels, BoucWenRecordRanksBoucWenFirst) {
+  const BoucWen model(
+      {.a = 1.0, .beta = 0.6, .gamma = 0.3, .n = 1.0, .stiffness = 2.0, .alpha_k = 0.3});
+  const auto v = test::random_walk(800, 6);
+  auto state = model.initial_state();
+  const auto y = simulate(model, state, v);
+  CompareOptions options;
+  options.models = {"pi", "bouc_wen"};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, y, options);
+  ASSERT_EQ(comparison.ranking.size(), 2u);
+  EXPECT_EQ(comparison.ranking.front().model, "bouc_wen") << model_comparison_markdown(comparison);
+  EXPECT_LT(comparison.ranking.front().validation.nrmse, 1e-4);
+}
+
+TEST(CompareModels, FailingFitIsReportedAndOthersRun) {
+  // 40 samples: enough for the PI weights, too few for the NARX network.
+  const auto v = test::random_walk(40, 7);
+  const auto y = pi_output(v);
+  CompareOptions options;
+  options.models = {"narx", "pi"};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, y, options);
+  ASSERT_EQ(comparison.ranking.size(), 2u);
+  EXPECT_EQ(comparison.ranking[0].model, "pi");
+  EXPECT_TRUE(comparison.ranking[0].ok);
+  const auto& narx = row_of(comparison, "narx");
+  EXPECT_FALSE(narx.ok);
+  EXPECT_NE(narx.error.find("too few for"), std::string::npos) << narx.error;
+
+  const auto markdown = model_comparison_markdown(comparison);
+  EXPECT_NE(markdown.find("| 1 | pi |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| - | narx | - |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("failed: NARX fit:"), std::string::npos) << markdown;
+  const auto csv = model_comparison_csv(comparison);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_NE(csv.find("\n1,pi,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n-,narx,failed,,,,,,,\"NARX fit:"), std::string::npos) << csv;
+}
+
+TEST(CompareModels, BadDataIsReportedForEveryModel) {
+  const auto v = test::random_walk(300, 8);
+  auto y = pi_output(v);
+  CompareOptions options;
+  options.models = {"pi", "narx"};
+  options.timing_seconds = 0.0;
+  y[10] = NAN;
+  auto comparison = compare_models(v, y, options);
+  for (const auto& row : comparison.ranking) {
+    EXPECT_FALSE(row.ok);
+    EXPECT_NE(row.error.find("[10] = nan is not finite"), std::string::npos) << row.error;
+  }
+  const std::vector<double> constant(300, 0.5);
+  comparison = compare_models(constant, pi_output(v), options);
+  for (const auto& row : comparison.ranking) {
+    EXPECT_FALSE(row.ok);
+    EXPECT_NE(row.error.find("constant"), std::string::npos) << row.model << ": " << row.error;
+  }
+}
+
+TEST(CompareModels, RejectsWhatConcernsEveryModel) {
+  const auto v = test::random_walk(100, 9);
+  const auto y = pi_output(v);
+  CompareOptions options;
+  options.models = {"pi", "no_such_model"};
+  EXPECT_HYST_ERROR(compare_models(v, y, options), "no_such_model");
+  options.models = {"pi", "pi"};
+  EXPECT_HYST_ERROR(compare_models(v, y, options), "compare: model 'pi' is listed twice");
+  options.models = {"pi"};
+  options.fit_options["gpi"] = nlohmann::json::object();
+  EXPECT_HYST_ERROR(compare_models(v, y, options),
+                    "fit options given for 'gpi', which is not compared");
+  options.fit_options.clear();
+  options.validate_fraction = 1.0;
+  EXPECT_HYST_ERROR(compare_models(v, y, options), "validate_fraction = 1 must be > 0 and < 1");
+  options.validate_fraction = 0.25;
+  const std::vector<double> one = {1.0};
+  EXPECT_HYST_ERROR(compare_models(one, one, options), "compare: 1 samples");
+  const std::vector<double> shorter(v.begin(), v.begin() + 50);
+  EXPECT_HYST_ERROR(compare_models(v, shorter, options), "input");
+}
+
+}  // namespace
+}  // namespace hyst
