@@ -18,3 +18,8 @@ std::string actuator_section(const std::filesystem::path& config_file,
 // The seed paper's comparison of Ikuta's, the PI and the Preisach model on one input with
 // internal loops (seed_comparison_section.cpp); needs no data.
 std::string seed_comparison_section(const std::filesystem::path& folder);
+
+// Every model with a fitter ranked on every measured record that has an input and an output
+// (model_comparison_section.cpp): tables, plots and an HTML report per record.
+std::string model_comparison_section(const std::filesystem::path& data_dir,
+                                     const std::filesystem::path& folder);

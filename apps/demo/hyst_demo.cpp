@@ -23,6 +23,7 @@ int run(const fs::path& data_dir, const fs::path& folder) {
   markdown += piezo_section(data_dir, folder);
   markdown += actuator_section(HYST_EXAMPLE_CONFIG_DIR "/msma_assumed.json", folder);
   markdown += seed_comparison_section(folder);
+  markdown += model_comparison_section(data_dir, folder);
   hyst::io::write_file_atomically(folder / "results.md", markdown);
   fmt::print("{}\nwrote {}\n", markdown, folder.string());
   return 0;

@@ -1,15 +1,66 @@
 #include "hyst/plot/comparison_html.hpp"
 
 #include <algorithm>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/plot/comparison_plots.hpp"
-#include "hyst/plot/svg.hpp"
+#include "hyst/plot/gnuplot.hpp"
 
 namespace hyst::plot {
 namespace {
+
+// Curves longer than this are thinned for the page (evenly spaced points): the page stays small,
+// and a loop drawn with 2000 points looks the same as one drawn with 40 000.
+constexpr std::size_t kMaxPagePoints = 2000;
+
+std::string xml_escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::vector<double> every_nth(const std::vector<double>& values, std::size_t stride) {
+  std::vector<double> kept;
+  for (std::size_t k = 0; k < values.size(); k += stride)
+    kept.push_back(values[k]);
+  if ((values.size() - 1) % stride != 0) kept.push_back(values.back());  // keep the last point
+  return kept;
+}
+
+//! The figure as an SVG element drawn by gnuplot, its curves thinned to kMaxPagePoints.
+std::string page_svg(Figure figure) {
+  for (auto& series : figure.series) {
+    if (series.x.size() <= kMaxPagePoints) continue;
+    const std::size_t stride = (series.x.size() + kMaxPagePoints - 1) / kMaxPagePoints;
+    series.x = every_nth(series.x, stride);
+    series.y = every_nth(series.y, stride);
+  }
+  return svg_element(figure);
+}
 
 std::string table(const ModelComparison& comparison) {
   std::string html =
@@ -55,9 +106,10 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
                                       [](const ComparedModel& row) { return row.ok; });
   if (any_fitted) {
     html += "<figure id=\"loops\">\n" +
-            svg(model_comparison_loop_figure(comparison, input, output)) +
+            page_svg(model_comparison_loop_figure(comparison, input, output)) +
             "<figcaption>Held-out part: measured and simulated loops.</figcaption>\n</figure>\n";
-    html += "<figure id=\"errors\">\n" + svg(model_comparison_error_figure(comparison, output)) +
+    html += "<figure id=\"errors\">\n" +
+            page_svg(model_comparison_error_figure(comparison, output)) +
             "<figcaption>Held-out part: error measured - simulated.</figcaption>\n</figure>\n";
   }
   return html + "</body>\n</html>\n";

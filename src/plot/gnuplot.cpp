@@ -13,6 +13,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string_view>
 #include <system_error>
@@ -102,17 +104,24 @@ std::string_view style_clause(Series::Style style) {
   return "with lines lw 1.5";
 }
 
-std::string script_for(const Figure& figure, const fs::path& output) {
+enum class Format { png, svg };
+
+std::string script_for(const Figure& figure, const fs::path& output, Format format) {
   std::string script;
   const auto size = fmt::format("size {},{}", figure.width, figure.height);
-  // pngcairo draws anti-aliased lines; the libgd `png` terminal is the fallback.
-  script += fmt::format(
-      "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
-      "  set terminal pngcairo noenhanced {0} font ',11'\n"
-      "}} else {{\n"
-      "  set terminal png noenhanced {0}\n"
-      "}}\n",
-      size);
+  if (format == Format::svg) {
+    script +=
+        fmt::format("set terminal svg noenhanced {} font 'sans,11' background rgb 'white'\n", size);
+  } else {
+    // pngcairo draws anti-aliased lines; the libgd `png` terminal is the fallback.
+    script += fmt::format(
+        "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
+        "  set terminal pngcairo noenhanced {0} font ',11'\n"
+        "}} else {{\n"
+        "  set terminal png noenhanced {0}\n"
+        "}}\n",
+        size);
+  }
   script += fmt::format("set output {}\n", gnuplot_string(output.string()));
   if (!figure.title.empty()) script += fmt::format("set title {}\n", gnuplot_string(figure.title));
   if (!figure.x_label.empty())
@@ -275,11 +284,12 @@ class RemoveOnExit {
   fs::path path_;
 };
 
-fs::path temporary_path_for(const fs::path& path) {
+fs::path temporary_path_for(const fs::path& path, Format format) {
   static std::atomic<unsigned long long> counter{0};
   const std::string target = path.filename().string().substr(0, 200);
-  return path.parent_path() / fmt::format(".{}.tmp.{}.{}.png", target,
-                                          static_cast<long long>(::getpid()), counter.fetch_add(1));
+  return path.parent_path() / fmt::format(".{}.tmp.{}.{}.{}", target,
+                                          static_cast<long long>(::getpid()), counter.fetch_add(1),
+                                          format == Format::svg ? "svg" : "png");
 }
 
 void check_folder(const fs::path& png) {
@@ -309,13 +319,16 @@ bool gnuplot_available() {
   }
 }
 
-void write_png(const Figure& figure, const fs::path& png) {
+namespace {
+
+//! Renders the figure into `png` (an image file of the format, replaced atomically).
+void write_image(const Figure& figure, const fs::path& png, Format format) {
   validate(figure);
   check_folder(png);
 
-  const fs::path temporary = temporary_path_for(png);
+  const fs::path temporary = temporary_path_for(png, format);
   RemoveOnExit remove_temporary(temporary);
-  const std::string script = script_for(figure, temporary);
+  const std::string script = script_for(figure, temporary, format);
 
   // gnuplot's standard error goes to an anonymous temporary file (read after it exits, so a
   // chatty gnuplot can never block on a full pipe while we are still writing the script).
@@ -364,6 +377,29 @@ void write_png(const Figure& figure, const fs::path& png) {
                             error.message(), temporary.string()));
   }
   remove_temporary.release();
+}
+
+}  // namespace
+
+void write_png(const Figure& figure, const fs::path& png) {
+  write_image(figure, png, Format::png);
+}
+
+void write_svg(const Figure& figure, const fs::path& svg) {
+  write_image(figure, svg, Format::svg);
+}
+
+std::string svg_element(const Figure& figure) {
+  const fs::path folder = fs::temp_directory_path();
+  const fs::path file = temporary_path_for(folder / "figure.svg", Format::svg);
+  RemoveOnExit remove_file(file);
+  write_svg(figure, file);
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto start = text.find("<svg");
+  if (!in.good() && !in.eof()) throw Error("cannot read the SVG gnuplot wrote");
+  if (start == std::string::npos) throw Error("gnuplot wrote no <svg> element");
+  return text.substr(start);
 }
 
 }  // namespace hyst::plot

@@ -298,10 +298,8 @@ case_compare() {
 case_compare_html() {
   # The --html page, rendered by headless Chromium: the ranking table and both SVG figures are
   # in the document the browser built.
-  if ! command -v chromium >/dev/null; then
-    echo "SKIP: chromium not installed (Debian package chromium)"
-    exit 77
-  fi
+  command -v chromium >/dev/null ||
+    fail "chromium is not installed (Debian package chromium; make deps installs it)"
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
   write_input_csv in.csv
   expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
@@ -318,7 +316,8 @@ case_compare_html() {
     grep -q "<figure id=\"$id\">" dom.html || fail "figure '$id' missing in the rendered page"
   done
   # Loops: measured, pi, bouc_wen; errors: pi, bouc_wen.
-  [ "$(grep -o '<polyline class="series"' dom.html | wc -l)" -eq 5 ] || fail "expected 5 curves"
+  [ "$(grep -o '<text>\(measured\|pi\|bouc_wen\)</text>' dom.html | wc -l)" -eq 5 ] ||
+    fail "expected 5 curves with their legend entries in the rendered page"
   expect_error 1 "--html 'missing/r.html': the folder 'missing' does not exist" -- \
     "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
     --html missing/r.html

@@ -1,7 +1,7 @@
 #pragma once
 //! \file
-//! Line and scatter plots written as PNG files by gnuplot (an external program, looked up on the
-//! PATH; Debian package `gnuplot-nox`).
+//! Line and scatter plots written as PNG (or SVG) files by gnuplot (an external program, looked up
+//! on the PATH; Debian package `gnuplot-nox`).
 //!
 //! hyst does not draw anything itself: write_png() validates the figure, writes a gnuplot script
 //! with the data inline (datablocks) to gnuplot's standard input, lets gnuplot render into a
@@ -52,5 +52,12 @@ bool gnuplot_available();
 //! a size out of range), when the folder does not exist, or when gnuplot is missing or fails
 //! (the message then includes what gnuplot wrote to its standard error).
 void write_png(const Figure& figure, const std::filesystem::path& png);
+
+//! The same as SVG (gnuplot's `svg` terminal), replaced atomically; same errors as write_png().
+void write_svg(const Figure& figure, const std::filesystem::path& svg);
+
+//! The figure rendered by gnuplot as an SVG document, from its `<svg` element on (without the
+//! XML declaration), ready to be placed inside an HTML page. Same errors as write_png().
+std::string svg_element(const Figure& figure);
 
 }  // namespace hyst::plot

@@ -1,0 +1,133 @@
+// Demo section "model comparison": `hyst compare` on every measured data set that has an input
+// and an output record. Each model with a fitter is fitted with its default options on the first
+// 75 % of one record and ranked by its free-run error on the last 25 %; the ranking table, its
+// CSV, the loop and error plots and a self-contained HTML report go to model_comparison/<set>/.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "demo_sections.hpp"
+
+#include "hyst/core/error.hpp"
+#include "hyst/identify/compare.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/mat_file.hpp"
+#include "hyst/io/micromag_forc.hpp"
+#include "hyst/plot/comparison_html.hpp"
+#include "hyst/plot/comparison_plots.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct DataSet {
+  std::string name;         // folder name under model_comparison/
+  std::string description;  // what the record is, for the Markdown
+  std::vector<double> input;
+  std::vector<double> output;
+};
+
+// The last period of a record made of `periods` identical ones (the steady state).
+std::vector<double> last_period(const std::vector<double>& record, std::size_t periods) {
+  const std::size_t length = record.size() / periods;
+  return {record.end() - static_cast<std::ptrdiff_t>(length), record.end()};
+}
+
+std::vector<DataSet> read_data_sets(const fs::path& data_dir) {
+  std::vector<DataSet> sets;
+  const auto piezo = data_dir / "piezo_pzt_aixacct_butterfly" / "MeasurementData.mat";
+  sets.push_back({"piezo_19kv",
+                  "piezo_pzt_aixacct_butterfly/MeasurementData.mat: one period of the 1.9 kV "
+                  "bipolar triangle, voltage [V] -> displacement [nm]",
+                  hyst::io::read_mat_vector(piezo, "Vplus_19kv"),
+                  hyst::io::read_mat_vector(piezo, "Displacement_19kv")});
+  for (const std::string material : {"MnZn_ferrite", "M130_27s", "amorf"}) {
+    const auto folder = data_dir / "bh_loops_jamodel";
+    const auto h = hyst::io::read_mat_columns(folder / ("H_" + material + ".mat"), "HmeasT");
+    const auto b = hyst::io::read_mat_columns(folder / ("B_" + material + ".mat"), "BmeasT");
+    sets.push_back({"bh_" + material,
+                    fmt::format("bh_loops_jamodel/{{H,B}}_{}.mat: the largest measured loop, "
+                                "H [A/m] -> B [T]",
+                                material),
+                    h.back(), b.back()});
+  }
+  const auto bouc_wen = data_dir / "boucwen_benchmark";
+  sets.push_back({"bouc_wen_benchmark",
+                  "boucwen_benchmark/{uest,yest}_multisine.mat: the last of the 4 periods "
+                  "(8192 samples at 750 Hz), force [N] -> displacement [m]",
+                  last_period(hyst::io::read_mat_vector(bouc_wen / "uest_multisine.mat", "u"), 4),
+                  last_period(hyst::io::read_mat_vector(bouc_wen / "yest_multisine.mat", "y"), 4)});
+  // The FORCs one after the other: a field history full of internal loops.
+  const auto forc = hyst::io::read_micromag_forc(data_dir / "pmagpy_forc_micromag_agm" /
+                                                 "conventional_example.forc");
+  DataSet curves{"forc_conventional",
+                 "pmagpy_forc_micromag_agm/conventional_example.forc: the first-order reversal "
+                 "curves one after the other, field -> moment",
+                 {},
+                 {}};
+  for (const auto& curve : forc.curves) {
+    curves.input.insert(curves.input.end(), curve.field.begin(), curve.field.end());
+    curves.output.insert(curves.output.end(), curve.moment.begin(), curve.moment.end());
+  }
+  sets.push_back(std::move(curves));
+  return sets;
+}
+
+// The Jiles-Atherton fit simulates about 10 us per sample and iterates a few hundred times from
+// several starts: minutes on a record of thousands of samples, so it is left out there.
+constexpr std::size_t kLongRecord = 2000;
+constexpr const char* kSlowOnLongRecords = "jiles_atherton";
+
+std::string compare_one(const DataSet& set, const fs::path& folder) {
+  fs::create_directories(folder);
+  hyst::CompareOptions options;
+  std::string left_out;
+  if (set.input.size() > kLongRecord) {
+    for (const auto& entry : hyst::ModelRegistry::builtin().entries()) {
+      if (entry.can_fit() && entry.name != kSlowOnLongRecords) options.models.push_back(entry.name);
+    }
+    left_out = fmt::format(
+        "`{}` is left out on this record of more than {} samples (its fit "
+        "takes minutes there).\n\n",
+        kSlowOnLongRecords, kLongRecord);
+  }
+  const auto comparison = hyst::compare_models(set.input, set.output, options);
+  const auto markdown = hyst::model_comparison_markdown(comparison);
+  hyst::io::write_file_atomically(folder / "ranking.md", markdown);
+  hyst::io::write_file_atomically(folder / "ranking.csv", hyst::model_comparison_csv(comparison));
+  std::string figures;
+  try {
+    hyst::plot::write_model_comparison_plots(comparison, set.input, set.output,
+                                             folder / "loops.png", folder / "errors.png");
+    hyst::plot::write_model_comparison_html(folder / "report.html", comparison, set.input,
+                                            set.output, "Model comparison: " + set.name);
+    figures =
+        fmt::format("Plots and report: `{0}/loops.png`, `{0}/errors.png`, `{0}/report.html`.\n\n",
+                    folder.filename().string());
+  } catch (const hyst::Error& error) {
+    figures = fmt::format("(no plots: {})\n\n", error.what());
+  }
+  return fmt::format("### {}\n\n{} ({} samples).\n\n{}{}\n{}", set.name, set.description,
+                     set.input.size(), left_out, markdown, figures);
+}
+
+}  // namespace
+
+std::string model_comparison_section(const fs::path& data_dir, const fs::path& folder) {
+  std::string markdown =
+      "## Which model fits? Every model with a fitter on every measured record\n\n"
+      "Default fit options for every model; the ranking is by the NRMSE of the free run on the "
+      "held-out last 25 % of the record. Not compared: `magnet_ferrite_bwaveform_loss` (B(t) "
+      "only, no H), `hystlab_vsm_hysteresis_loops` and "
+      "`pmagpy_forc_micromag_agm/hysteresis_magic_example.dat` (loop files in formats hyst "
+      "has no reader for yet).\n\n";
+  for (const auto& set : read_data_sets(data_dir)) {
+    fmt::print(stderr, "model comparison: {} ({} samples)\n", set.name, set.input.size());
+    markdown += compare_one(set, folder / "model_comparison" / set.name);
+  }
+  return markdown;
+}
