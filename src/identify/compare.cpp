@@ -39,7 +39,8 @@ std::vector<const ModelEntry*> chosen_models(const CompareOptions& options,
       entries.push_back(&entry);
     }
   }
-  for (const auto& [name, json] : options.fit_options) {
+  for (const auto& option : options.fit_options) {
+    const std::string& name = option.first;  // clang 14 cannot capture a structured binding
     const bool compared = std::any_of(entries.begin(), entries.end(),
                                       [&](const ModelEntry* entry) { return entry->name == name; });
     if (!compared) {

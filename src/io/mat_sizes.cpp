@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -154,6 +155,7 @@ class V5Walker {
            OnCompressed&& on_compressed, std::uint64_t matrix = kNoMatrix) {
     if (depth > kMaxNesting) fail("matrices nested too deep");
     int count = 0;
+    Shape shape;
     std::uint64_t position = begin;
     while (position + 8 <= end) {
       const std::uint32_t type = read_u32(position);
@@ -161,6 +163,7 @@ class V5Walker {
       if (matrix != kNoMatrix) check_matrix_header(matrix, count, position, type, bytes);
       ++count;
       if ((type >> 16) != 0) {  // small element: type and size in 4 bytes, data in the other 4
+        if (matrix != kNoMatrix && count == 4) shape.field_name_length = bytes;
         position += 8;
         continue;
       }
@@ -169,8 +172,16 @@ class V5Walker {
         fail(fmt::format("the element at byte {} claims {} bytes but {} has {} left", position,
                          bytes, top_level ? "the file" : "its container", left));
       }
-      // An empty matrix has no bytes at all; any other starts with three header elements, which
-      // matio reads even when they lie beyond the matrix.
+      if (matrix != kNoMatrix) check_matrix_size(matrix, count - 1, position, bytes, end, shape);
+      // An empty matrix has no bytes at all (a cell may be one); any other starts with three
+      // header elements, which matio reads even when they lie beyond the matrix - so a variable
+      // (a top-level matrix) needs them.
+      if (type == kMatrix && bytes == 0 && top_level) {
+        fail(
+            fmt::format("the variable at byte {} is an empty matrix element, without the array "
+                        "flags, dimensions and name every variable has",
+                        position));
+      }
       if (type == kMatrix && bytes > 0 &&
           walk(position + 8, position + 8 + bytes, depth + 1, false, on_compressed, position) <
               kMatrixHeaderElements) {
@@ -188,6 +199,48 @@ class V5Walker {
  private:
   static constexpr std::uint64_t kNoMatrix = ~std::uint64_t{0};
   static constexpr int kMatrixHeaderElements = 3;
+  static constexpr std::uint32_t kCell = 1, kStruct = 2, kObject = 3;  // array classes
+
+  //! What a matrix's header says of its contents.
+  struct Shape {
+    std::uint32_t array_class = 0;
+    double elements = 0.0;           //!< product of the dimensions
+    double field_name_length = 0.0;  //!< structs: bytes per field name
+  };
+
+  //! matio allocates one pointer per cell of a cell array and per field of every struct element
+  //! (and per object element) before it reads them, so their count must fit in the matrix: each
+  //! one is a matrix element of at least 8 bytes.
+  void check_matrix_size(std::uint64_t matrix, int index, std::uint64_t position,
+                         std::uint32_t bytes, std::uint64_t end, Shape& shape) {
+    const auto room = static_cast<double>(end - position);
+    if (index == 0) shape.array_class = read_u32(position + 8) & 0xff;
+    if (index == 1) {
+      shape.elements = 1.0;
+      for (std::uint32_t k = 0; k < bytes / 4; ++k)
+        shape.elements *= read_u32(position + 8 + 4 * k);
+      const bool holds_matrices = shape.array_class == kCell || shape.array_class == kStruct ||
+                                  shape.array_class == kObject;
+      if (holds_matrices && shape.elements * 8.0 > room) {
+        fail(
+            fmt::format("the matrix at byte {} claims {:.0f} elements, more than the {} bytes "
+                        "left in it can hold",
+                        matrix, shape.elements, end - position));
+      }
+    }
+    if (index == 3 && shape.array_class == kStruct && bytes >= 4) {
+      shape.field_name_length = read_u32(position + 8);
+    }
+    if (index == 4 && shape.array_class == kStruct && shape.field_name_length > 0.0) {
+      const double fields = std::floor(bytes / shape.field_name_length);
+      if (shape.elements * fields * 8.0 > room) {
+        fail(
+            fmt::format("the struct at byte {} claims {:.0f} elements of {:.0f} fields, more "
+                        "than the {} bytes left in it can hold",
+                        matrix, shape.elements, fields, end - position));
+      }
+    }
+  }
 
   //! Element `index` of the matrix at `matrix`: the array flags, dimensions and name must be what
   //! the format defines. matio reads them at fixed places whatever their tags say, so a

@@ -418,6 +418,28 @@ TEST_F(MatFile, RejectsMatrixHeadersOtherThanTheFormatDefines) {
                     "byte 168");
 }
 
+// matio allocates a pointer per cell before reading the cells (input found by fuzz/fuzz_mat_file:
+// a 300-byte cell array claiming 3 x 3107953306 cells, i.e. 74 GB of pointers).
+TEST_F(MatFile, RejectsCellArraysClaimingMoreCellsThanTheyHold) {
+  const std::string flags = element(6, le32(1) + le32(0));  // class 1: cell array
+  const std::string cells = element(14, "");                // one empty matrix as its only cell
+  const fs::path good = file("one_cell.mat");
+  write_v5(good, element(14, flags + element(5, le32(1) + le32(1)) + element(1, "c") + cells));
+  EXPECT_NO_THROW(list_mat_variables(good));
+  // A variable without header elements: matio reads them from whatever follows.
+  const fs::path bare = file("bare_variable.mat");
+  write_v5(bare, element(14, "") + element(6, le32(6) + le32(0)));
+  EXPECT_HYST_ERROR(list_mat_variables(bare),
+                    "not a valid MAT file: the variable at byte 128 is an empty matrix element, "
+                    "without the array flags, dimensions and name every variable has");
+  const fs::path huge = file("huge_cell.mat");
+  write_v5(huge, element(14, flags + element(5, le32(3) + le32(3107953306u)) + element(1, "c")));
+  // The dimensions element starts at byte 152 and the matrix ends at 136 + 48 = 184.
+  EXPECT_HYST_ERROR(list_mat_variables(huge),
+                    "not a valid MAT file: the matrix at byte 128 claims 9323859918 elements, more "
+                    "than the 32 bytes left in it can hold");
+}
+
 // A compressed element is inflated and checked like the file: a few bytes of zlib data can
 // claim gigabytes.
 TEST_F(MatFile, ChecksTheElementInsideACompressedOne) {
