@@ -199,7 +199,7 @@ class V5Walker {
  private:
   static constexpr std::uint64_t kNoMatrix = ~std::uint64_t{0};
   static constexpr int kMatrixHeaderElements = 3;
-  static constexpr std::uint32_t kCell = 1, kStruct = 2, kObject = 3;  // array classes
+  static constexpr std::uint32_t kStruct = 2, kChar = 4, kUint64 = 15;  // array classes
 
   //! What a matrix's header says of its contents.
   struct Shape {
@@ -209,8 +209,8 @@ class V5Walker {
   };
 
   //! matio allocates one pointer per cell of a cell array and per field of every struct element
-  //! (and per object element) before it reads them, so their count must fit in the matrix: each
-  //! one is a matrix element of at least 8 bytes.
+  //! (and per element of the other non-numeric classes) before it reads them, so their count must
+  //! fit in the matrix: each one is an element of at least 8 bytes.
   void check_matrix_size(std::uint64_t matrix, int index, std::uint64_t position,
                          std::uint32_t bytes, std::uint64_t end, Shape& shape) {
     const auto room = static_cast<double>(end - position);
@@ -219,8 +219,10 @@ class V5Walker {
       shape.elements = 1.0;
       for (std::uint32_t k = 0; k < bytes / 4; ++k)
         shape.elements *= read_u32(position + 8 + 4 * k);
-      const bool holds_matrices = shape.array_class == kCell || shape.array_class == kStruct ||
-                                  shape.array_class == kObject;
+      // Classes 4..15 (char, sparse and the numeric ones) hold plain data, whose size the data
+      // element states; every other one (cell, struct, object, function, opaque, unknown) is
+      // read element by element.
+      const bool holds_matrices = shape.array_class < kChar || shape.array_class > kUint64;
       if (holds_matrices && shape.elements * 8.0 > room) {
         fail(
             fmt::format("the matrix at byte {} claims {:.0f} elements, more than the {} bytes "
@@ -351,16 +353,8 @@ void check_mat_sizes(const std::filesystem::path& path) {
   in.seekg(0);
   in.read(header, static_cast<std::streamsize>(std::min<std::uint64_t>(size, kHeaderBytes)));
   in.clear();
-  // v7.3 files are HDF5 files with a 512-byte user block: HDF5 judges them.
-  if (size >= 520) {
-    char signature[8] = {};
-    in.seekg(512);
-    in.read(signature, 8);
-    in.clear();
-    if (std::string_view(signature, 8) == std::string_view("\x89HDF\r\n\x1a\n", 8)) return;
-  }
-  // v5: bytes 124..125 version 0x0100, 126..127 "IM" when the file's byte order is
-  // little-endian, "MI" when big-endian.
+  // Bytes 124..125: the version, 0x0100 for v5 and 0x0200 for v7.3; 126..127: "IM" when the
+  // file's byte order is little-endian, "MI" when big-endian. matio goes by the version alone.
   const bool little = size >= kHeaderBytes && header[126] == 'I' && header[127] == 'M';
   const bool big = size >= kHeaderBytes && header[126] == 'M' && header[127] == 'I';
   if (little || big) {
@@ -369,6 +363,14 @@ void check_mat_sizes(const std::filesystem::path& path) {
     if (first == 0x01 && second == 0x00) {
       check_v5(in, path, size, big);
       return;
+    }
+    // v7.3 files are HDF5 files with a 512-byte user block: HDF5 judges them.
+    if (first == 0x02 && second == 0x00 && size >= 520) {
+      char signature[8] = {};
+      in.seekg(512);
+      in.read(signature, 8);
+      in.clear();
+      if (std::string_view(signature, 8) == std::string_view("\x89HDF\r\n\x1a\n", 8)) return;
     }
   }
   // Anything else is tried as v4 by matio.

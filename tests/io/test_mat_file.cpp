@@ -432,12 +432,25 @@ TEST_F(MatFile, RejectsCellArraysClaimingMoreCellsThanTheyHold) {
   EXPECT_HYST_ERROR(list_mat_variables(bare),
                     "not a valid MAT file: the variable at byte 128 is an empty matrix element, "
                     "without the array flags, dimensions and name every variable has");
+  // An HDF5 signature at byte 512 does not make a v5 file an HDF5 file: matio reads it as v5.
+  std::string padding = element(6, std::string(512 - 128 - 8, '\0'));
+  padding += std::string("\x89HDF\r\n\x1a\n", 8);
+  const fs::path disguised = file("disguised.mat");
+  write_v5(disguised, padding + element(14, ""));
+  EXPECT_HYST_ERROR(list_mat_variables(disguised),
+                    "not a valid MAT file: the variable at byte 520 is an empty matrix element");
   const fs::path huge = file("huge_cell.mat");
   write_v5(huge, element(14, flags + element(5, le32(3) + le32(3107953306u)) + element(1, "c")));
   // The dimensions element starts at byte 152 and the matrix ends at 136 + 48 = 184.
   EXPECT_HYST_ERROR(list_mat_variables(huge),
                     "not a valid MAT file: the matrix at byte 128 claims 9323859918 elements, more "
                     "than the 32 bytes left in it can hold");
+  // The same for the other classes matio reads element by element (16: function handle).
+  const fs::path function = file("huge_function.mat");
+  write_v5(function, element(14, element(6, le32(16) + le32(0)) +
+                                     element(5, le32(3) + le32(4253456185u)) + element(1, "f")));
+  EXPECT_HYST_ERROR(list_mat_variables(function),
+                    "not a valid MAT file: the matrix at byte 128 claims 12760368555 elements");
 }
 
 // A compressed element is inflated and checked like the file: a few bytes of zlib data can
