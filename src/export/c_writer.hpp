@@ -1,6 +1,6 @@
 #pragma once
 // The common part of the C export: number and table formatting for the chosen scalar type, the
-// placeholder expansion of C templates, the file preamble and the atomic write.
+// the substitution of the marks in C templates, the file preamble and the atomic write.
 
 #include <initializer_list>
 #include <span>
@@ -36,7 +36,7 @@ class CWriter {
   //! "{a, b, c}" with line breaks every few numbers.
   std::string table(std::span<const double> values) const;
 
-  //! Replaces the placeholders of a C template: '@' by the prefix, "$name" (a math.h function,
+  //! Substitutes the marks of a C template: '@' by the prefix, "$name" (a math.h function,
   //! e.g. $exp) by name or namef, and "#(x)" (a literal) by x or xf.
   std::string expand(std::string_view text) const;
 
