@@ -1,5 +1,5 @@
 #pragma once
-// The common part of the C export: number and table formatting for the chosen scalar type, the
+// The common part of the C export: number and table formatting for the chosen scalar type,
 // the substitution of the marks in C templates, the file preamble and the atomic write.
 
 #include <initializer_list>
