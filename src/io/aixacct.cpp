@@ -10,38 +10,17 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "text_fields.hpp"
 
 namespace hyst::io {
 namespace {
 
-constexpr std::string_view kBlank = " \t\r";
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(kBlank);
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(kBlank);
-  return text.substr(first, last - first + 1);
-}
-
-std::optional<double> parse_number(std::string_view text) {
-  text = trim(text);
-  std::string_view digits = text;
-  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-  // from_chars rejects a leading '+'; accept one, but not "+-1".
-  if (digits.empty() || (digits.size() < text.size() && digits.front() == '-')) {
-    return std::nullopt;
-  }
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (error != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) {
-    return std::nullopt;
-  }
-  return value;
-}
+using detail::parse_number;
+using detail::trim;
 
 //! "file:line: " or "line N: " for an unnamed source.
 std::string where(std::string_view source, std::size_t line) {
-  return source.empty() ? fmt::format("line {}: ", line) : fmt::format("{}:{}: ", source, line);
+  return detail::location(source, line) + ": ";
 }
 
 //! "Table 12" -> 12.
@@ -258,15 +237,11 @@ const AixacctColumn& AixacctTable::column(std::string_view name, std::string_vie
 }
 
 std::optional<std::string> AixacctTable::metadata_text(std::string_view key) const {
-  for (const auto& [name, value] : metadata) {
-    if (name == key) return value;
-  }
-  return std::nullopt;
+  return detail::entry_text(metadata, key);
 }
 
 std::optional<double> AixacctTable::metadata_number(std::string_view key) const {
-  const auto text = metadata_text(key);
-  return text ? parse_number(*text) : std::nullopt;
+  return detail::entry_number(metadata, key);
 }
 
 Table AixacctTable::to_table(std::string source) const {

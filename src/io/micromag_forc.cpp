@@ -1,45 +1,24 @@
 #include "hyst/io/micromag_forc.hpp"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
-#include <system_error>
 
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "text_fields.hpp"
 
 namespace hyst::io {
 namespace {
 
-constexpr std::string_view kBlank = " \t\r";
+using detail::location;
+using detail::parse_number;
+using detail::trim;
+
 constexpr std::string_view kEndMarker = "Data File ends";
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(kBlank);
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(kBlank);
-  return text.substr(first, last - first + 1);
-}
-
-std::string where(std::string_view source, std::size_t line) {
-  return source.empty() ? fmt::format("line {}", line) : fmt::format("{}:{}", source, line);
-}
-
-std::optional<double> parse_number(std::string_view text) {
-  text = trim(text);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  if (text.empty()) return std::nullopt;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-    return std::nullopt;
-  }
-  return value;
-}
 
 struct Block {
   std::vector<double> field;
@@ -56,15 +35,11 @@ constexpr std::array<std::pair<ForcDriftCorrection, std::string_view>, 3> kDrift
 }  // namespace
 
 std::optional<std::string> MicromagForcFile::header_text(std::string_view key) const {
-  for (const auto& [name, value] : header) {
-    if (name == key) return value;
-  }
-  return std::nullopt;
+  return detail::entry_text(header, key);
 }
 
 std::optional<double> MicromagForcFile::header_number(std::string_view key) const {
-  const auto text = header_text(key);
-  return text ? parse_number(*text) : std::nullopt;
+  return detail::entry_number(header, key);
 }
 
 std::size_t MicromagForcFile::points() const {
@@ -96,7 +71,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
     throw Error(
         fmt::format("{}: not a MicroMag data file (the first line is '{}', expected "
                     "'MicroMag 2900/3900 Data File (Series ...)')",
-                    where(source_name, 1), trim(line)));
+                    location(source_name, 1), trim(line)));
   }
   file.format = std::string(trim(line));
   if (next_line(line)) file.title = std::string(trim(line));
@@ -117,7 +92,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
     throw Error(
         fmt::format("{}: no 'NData = ...' line: the header does not end, or this is not a "
                     "FORC file",
-                    where(source_name, line_number)));
+                    location(source_name, line_number)));
   }
 
   // Data blocks separated by blank lines, up to the end marker.
@@ -142,7 +117,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
         comma == std::string_view::npos ? std::nullopt : parse_number(content.substr(comma + 1));
     if (!field || !moment) {
       throw Error(fmt::format("{}: '{}' is not 'field,moment' with two finite numbers",
-                              where(source_name, line_number), content));
+                              location(source_name, line_number), content));
     }
     if (current.field.empty()) current.first_line = line_number;
     current.field.push_back(*field);
@@ -153,7 +128,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
     throw Error(
         fmt::format("{}: the file ends without the line 'MicroMag 2900/3900 Data File "
                     "ends' (truncated?)",
-                    where(source_name, line_number)));
+                    location(source_name, line_number)));
   }
 
   // Blocks alternate: calibration point, curve, calibration point, curve, ...
@@ -165,7 +140,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
       throw Error(
           fmt::format("{}: a calibration block has {} points; expected 1 (blocks alternate: "
                       "calibration point, FORC)",
-                      where(source_name, calibration.first_line), calibration.field.size()));
+                      location(source_name, calibration.first_line), calibration.field.size()));
     }
     if (b + 1 == blocks.size()) {
       file.final_calibration = {calibration.field[0], calibration.moment[0]};
@@ -179,12 +154,12 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
   if (const auto declared = file.header_number("NData")) {
     if (*declared != static_cast<double>(points)) {
       throw Error(fmt::format("{}: the header says NData = {} but the file has {} data points",
-                              where(source_name, line_number), *declared, points));
+                              location(source_name, line_number), *declared, points));
     }
   }
   if (file.curves.empty()) {
     throw Error(fmt::format("{}: the file has no FORC (only calibration points)",
-                            where(source_name, line_number)));
+                            location(source_name, line_number)));
   }
   return file;
 }
