@@ -34,6 +34,8 @@ def use_as_data(path: Path, out: Path):
     if path.suffix == ".mat":
         names = hyst.io.list_mat_variables(path)
         columns = {name: hyst.io.read_mat_vector(path, name) for name in names}
+    elif path.suffix == ".hys":
+        columns = hyst.io.read_micromag_loop(path).to_dict()
     else:
         columns = hyst.io.read_csv(path)
     if "v" not in columns:

@@ -68,9 +68,14 @@ std::vector<ReadTable> read_tables(const std::filesystem::path& path,
     table.values.push_back(std::move(values));
   }
   table.info.rows = table.values.empty() ? 0 : table.values.front().size();
-  format = source.is_mat()
-               ? fmt::format("MATLAB .mat file, {} variables", table.info.columns.size())
-               : fmt::format("CSV, {} columns", table.info.columns.size());
+  const auto columns = table.info.columns.size();
+  if (source.is_mat()) {
+    format = fmt::format("MATLAB .mat file, {} variables", columns);
+  } else if (source.is_micromag_loop()) {
+    format = fmt::format("MicroMag hysteresis loop file, {} columns", columns);
+  } else {
+    format = fmt::format("CSV, {} columns", columns);
+  }
   tables.push_back(std::move(table));
   return tables;
 }

@@ -9,6 +9,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/mat_file.hpp"
+#include "hyst/io/micromag_loop.hpp"
 
 namespace hyst::io {
 namespace {
@@ -48,6 +49,9 @@ DataFile::DataFile(std::filesystem::path path, std::optional<std::size_t> table)
       const auto& chosen = table ? aixacct_->measurement(*table) : tables.front();
       aixacct_table_ = static_cast<std::size_t>(&chosen - tables.data());
       table_ = chosen.to_table(path_.string());
+    } else if (looks_like_micromag_loop(text)) {
+      micromag_loop_ = true;
+      table_ = parse_micromag_loop(text, path_.string()).to_table();
     } else {
       table_ = parse_csv(text, path_.string());
     }
@@ -56,7 +60,7 @@ DataFile::DataFile(std::filesystem::path path, std::optional<std::size_t> table)
   if (table && !aixacct_) {
     throw Error(fmt::format(
         "{}: --table (Python: table=) chooses a table of an aixACCT export; this file is {}",
-        path_.string(), mat_ ? "a MAT file" : "CSV"));
+        path_.string(), mat_ ? "a MAT file" : (micromag_loop_ ? "a MicroMag loop file" : "CSV")));
   }
 }
 

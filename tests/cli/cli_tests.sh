@@ -295,6 +295,21 @@ case_compare() {
   expect_no_temporaries
 }
 
+case_compare_loop_file() {
+  # A MicroMag VSM loop file is read like CSV, its columns named by their titles.
+  local loop="$HYST_SHARED_DATA_DIR/hystlab_vsm_hysteresis_loops/fig06/Conc_40_C3B.hys"
+  if [ ! -f "$loop" ]; then
+    echo "SKIP: $loop not found"
+    exit 77
+  fi
+  expect_ok "$HYST" compare --data "$loop" --input Field --output "Adjusted Moment" \
+    --models pi,backlash_like --no-plots
+  expect_stdout "| pi |" "| backlash_like |" "samples 0..180"
+  [ "$(wc -l <ranking.csv)" -eq 3 ] || fail "ranking.csv should have 2 rows: $(cat ranking.csv)"
+  expect_error 1 "Conc_40_C3B.hys: no column 'Adjusted moment' (columns: Field, Moment, " -- \
+    "$HYST" compare --data "$loop" --input Field --output "Adjusted moment" --no-plots
+}
+
 case_compare_html() {
   # The --html page, rendered by headless Chromium: the ranking table and both SVG figures are
   # in the document the browser built.
@@ -736,6 +751,14 @@ assert (v['unit'], v['samples'], v['reversals'], v['cycles']) == ('V', 401, 2, 1
     fail "tri.csv v line: $(grep '^  v' "$WORK/stdout")"
   expect_ok "$HYST" data info "$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
   expect_stdout "MATLAB .mat file, 10 variables" "Vplus_19kv"
+  # A MicroMag VSM loop: a down and an up branch of 201 points each (its header: "Number of
+  # data 402", from +500 mT to -500 mT and back), measured within 1 mT of the set field: one
+  # reversal (at -0.5 T) and no complete cycle.
+  expect_ok "$HYST" data info \
+    "$HYST_SHARED_DATA_DIR/hystlab_vsm_hysteresis_loops/fig03a-f_noise_repeats/Noise_test_c100.000"
+  expect_stdout "MicroMag hysteresis loop file, 2 columns" "table: 2 columns, 402 rows"
+  grep -E '^  Field +402 +-0\.49[0-9]+ +0\.49[0-9]+ +1 +0$' "$WORK/stdout" >/dev/null ||
+    fail "Noise_test Field line: $(grep '^  Field' "$WORK/stdout")"
 }
 
 case_data_extract_fit() {

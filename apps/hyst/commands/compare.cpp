@@ -122,7 +122,9 @@ void add_compare_command(CLI::App& app) {
   auto options = std::make_shared<CompareCommandOptions>();
   auto* command = app.add_subcommand(
       "compare", "Fit several models to the same data and rank them on the same held-out part.");
-  command->add_option("--data", options->data, "Measured data: CSV, or a MATLAB .mat file")
+  command
+      ->add_option("--data", options->data,
+                   "Measured data: CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
       ->required();
   command->add_option("--input", options->input, "Input column (variable) of --data")->required();
   command->add_option("--output", options->output, "Output column (variable) of --data")

@@ -1,5 +1,6 @@
-// hyst data info FILE: the tables of a measured data file (CSV, MATLAB .mat, aixACCT export),
-// their columns with units, lengths and ranges, and the reversal points and cycles of each column.
+// hyst data info FILE: the tables of a measured data file (CSV, MATLAB .mat, aixACCT export,
+// MicroMag loop file), their columns with units, lengths and ranges, and the reversal points and
+// cycles of each column.
 // hyst data extract FILE: chosen columns of one table as CSV, ready for 'hyst fit'.
 
 #include <cstddef>
@@ -106,8 +107,9 @@ void run_extract(const ExtractOptions& options) {
 }  // namespace
 
 void add_data_command(CLI::App& app) {
-  auto* command = app.add_subcommand(
-      "data", "Inspect measured data files (CSV, .mat, aixACCT) and extract columns as CSV.");
+  auto* command = app.add_subcommand("data",
+                                     "Inspect measured data files (CSV, .mat, aixACCT, MicroMag "
+                                     "loop) and extract columns as CSV.");
   command->require_subcommand(1);
   command->footer(R"(Examples:
   hyst data info RMN_TRAP_SLOW.dat --table 6 --loop V+,P1
@@ -117,7 +119,9 @@ Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
   auto info = std::make_shared<InfoOptions>();
   auto* info_command = command->add_subcommand(
       "info", "Tables, columns, units, lengths, ranges, reversal points and cycles of a file.");
-  info_command->add_option("file", info->file, "CSV, MATLAB .mat or aixACCT export")->required();
+  info_command
+      ->add_option("file", info->file, "CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
+      ->required();
   info_command->add_option("--table", info->table, "Only measurement table N of an aixACCT export");
   info_command->add_option("--band-fraction", info->band_fraction,
                            "Hysteresis band for reversals and cycles, as a fraction of each "
@@ -138,7 +142,8 @@ one period: back to the first value, moving in the first direction.)");
   auto extract = std::make_shared<ExtractOptions>();
   auto* extract_command =
       command->add_subcommand("extract", "Write chosen columns of one table as CSV.");
-  extract_command->add_option("file", extract->file, "CSV, MATLAB .mat or aixACCT export")
+  extract_command
+      ->add_option("file", extract->file, "CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
       ->required();
   extract_command->add_option("--table", extract->table,
                               "Measurement table N of an aixACCT export");

@@ -233,7 +233,9 @@ void add_fit_command(CLI::App& app) {
   auto* command = app.add_subcommand(
       "fit", "Fit a model to measured input/output data and save it as a model file.");
   command->add_option("model", options->model, "Model name (see 'hyst models')")->required();
-  command->add_option("--data", options->data, "Measured data: CSV, or a MATLAB .mat file")
+  command
+      ->add_option("--data", options->data,
+                   "Measured data: CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
       ->required();
   command->add_option("--input", options->input, "Input column (variable) of --data")->required();
   command->add_option("--output", options->output, "Output column (variable) of --data")

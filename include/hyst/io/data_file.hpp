@@ -1,8 +1,10 @@
 #pragma once
 // Named columns of a measured data file, as the command line and hyst.data read them: a CSV table
 // (hyst/io/csv.hpp), the vector variables of a MATLAB .mat file (hyst/io/mat_file.hpp), or one
-// table of an aixACCT export (hyst/io/aixacct.hpp). A ".mat" extension (any case) means a MAT file;
-// other files are aixACCT exports when their text starts like one (io::looks_like_aixacct), CSV
+// table of an aixACCT export (hyst/io/aixacct.hpp), or the data columns of a MicroMag hysteresis
+// loop file (hyst/io/micromag_loop.hpp: "Field", "Moment", "Adjusted Moment", ...). A ".mat"
+// extension (any case) means a MAT file; other files are aixACCT exports or MicroMag loop files
+// when their text starts like one (io::looks_like_aixacct, io::looks_like_micromag_loop), CSV
 // otherwise.
 
 #include <cstddef>
@@ -27,6 +29,7 @@ class DataFile {
 
   const std::filesystem::path& path() const { return path_; }
   bool is_mat() const { return mat_; }
+  bool is_micromag_loop() const { return micromag_loop_; }
   //! The whole export when the file is an aixACCT export, else nullptr.
   const AixacctFile* aixacct() const { return aixacct_ ? &*aixacct_ : nullptr; }
   //! Column (variable) names in file order.
@@ -54,7 +57,8 @@ class DataFile {
  private:
   std::filesystem::path path_;
   bool mat_ = false;
-  Table table_;  //!< CSV and aixACCT (the chosen table, named by headers)
+  bool micromag_loop_ = false;
+  Table table_;  //!< CSV, MicroMag and aixACCT (the chosen table, named by headers)
   std::optional<AixacctFile> aixacct_;
   std::size_t aixacct_table_ = 0;  //!< index into aixacct_->measurements
   std::vector<std::string> names_;
