@@ -240,7 +240,8 @@ void bind_files(py::module_& d) {
         return json_to_python(data::record_info_json(data::record_info(path, options)));
       },
       "path"_a, "table"_a = py::none(), "band_fraction"_a = 0.02, "loop"_a = py::none(),
-      "What a data file (CSV, .mat, aixACCT export) holds, as a dict with the content of 'hyst "
+      "What a data file (CSV, .mat, aixACCT export, MicroMag loop file) holds, as a dict with the "
+      "content of 'hyst "
       "data info --json': its tables, each column's unit, samples, min, max and the counts of "
       "reversals and cycles with a band of band_fraction x its range; loop=(input, output) adds "
       "the figures of every cycle of that loop. table chooses one measurement table of an "

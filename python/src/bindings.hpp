@@ -52,5 +52,6 @@ void bind_registry(py::module_& module);
 void bind_actuator(py::module_& module);
 void bind_data(py::module_& module);
 void bind_compare(py::module_& module);
+void bind_magnetometer_files(py::module_& module);
 
 }  // namespace hyst::python

@@ -185,4 +185,5 @@ PYBIND11_MODULE(hyst, module) {
   hyst::python::bind_actuator(module);
   hyst::python::bind_data(module);
   hyst::python::bind_compare(module);
+  hyst::python::bind_magnetometer_files(module);
 }
