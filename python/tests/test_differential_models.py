@@ -2,15 +2,14 @@
 Jiles-Atherton, simulated, inverted and fitted through hyst.Model / hyst.fit."""
 
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import shared_data_dir
 
 import hyst
 
-DATA = Path(os.environ.get("HYST_SHARED_DATA_DIR", "/nonexistent"))
+DATA = shared_data_dir()
 
 
 def test_backlash_like_matches_reference_check():
