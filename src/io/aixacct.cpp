@@ -39,15 +39,7 @@ std::optional<std::size_t> table_number(std::string_view line) {
 
 //! Tab-separated fields, trimmed; trailing tabs (an empty last field) are dropped.
 std::vector<std::string_view> split_tabs(std::string_view line) {
-  std::vector<std::string_view> fields;
-  line = trim(line);
-  std::size_t start = 0;
-  while (start <= line.size()) {
-    const auto end = std::min(line.find('\t', start), line.size());
-    fields.push_back(trim(line.substr(start, end - start)));
-    start = end + 1;
-  }
-  return fields;
+  return detail::split_fields(trim(line), '\t');
 }
 
 //! "V+ [V]" -> {"V+", "V"}; "Averages []" -> {"Averages", ""}; "Time" -> {"Time", ""}.

@@ -19,15 +19,7 @@ using detail::parse_number;
 using detail::trim;
 
 std::vector<std::string_view> split_tabs(std::string_view line) {
-  std::vector<std::string_view> cells;
-  std::size_t start = 0;
-  while (true) {
-    const auto tab = line.find('\t', start);
-    cells.push_back(
-        trim(line.substr(start, tab == std::string_view::npos ? line.npos : tab - start)));
-    if (tab == std::string_view::npos) return cells;
-    start = tab + 1;
-  }
+  return detail::split_fields(line, '\t');
 }
 
 //! The first of `names` that the table has (MagIC 2.5 and 3 name columns differently).

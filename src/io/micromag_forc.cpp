@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "micromag_lines.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
@@ -17,8 +18,6 @@ namespace {
 using detail::location;
 using detail::parse_number;
 using detail::trim;
-
-constexpr std::string_view kEndMarker = "Data File ends";
 
 struct Block {
   std::vector<double> field;
@@ -66,8 +65,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
   };
 
   std::string_view line;
-  if (!next_line(line) || trim(line).rfind("MicroMag", 0) != 0 ||
-      trim(line).find("Data File") == std::string_view::npos) {
+  if (!next_line(line) || !detail::is_micromag_format_line(line)) {
     throw Error(
         fmt::format("{}: not a MicroMag data file (the first line is '{}', expected "
                     "'MicroMag 2900/3900 Data File (Series ...)')",
@@ -106,7 +104,7 @@ MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view sou
       current = Block{};
       continue;
     }
-    if (content.find(kEndMarker) != std::string_view::npos) {
+    if (detail::is_micromag_end_marker(content)) {
       ended = true;
       break;
     }

@@ -9,39 +9,23 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "micromag_lines.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
 namespace {
 
+using detail::is_micromag_end_marker;
+using detail::is_micromag_format_line;
 using detail::location;
 using detail::parse_number;
 using detail::trim;
-
-constexpr std::string_view kEndMarker = "Data File ends";
-
-bool is_format_line(std::string_view line) {
-  line = trim(line);
-  return line.starts_with("MicroMag") && line.find("Data File") != std::string_view::npos &&
-         line.find(kEndMarker) == std::string_view::npos;
-}
 
 //! Segment and data rows start with a number; header lines start with a letter.
 bool is_comma_row(std::string_view content) {
   if (content.empty() || content.find(',') == std::string_view::npos) return false;
   const char first = content.front();
   return (first >= '0' && first <= '9') || first == '+' || first == '-' || first == '.';
-}
-
-std::vector<std::string_view> split_commas(std::string_view row) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = row.find(',', start);
-    fields.push_back(row.substr(start, comma == std::string_view::npos ? row.npos : comma - start));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
 }
 
 //! Words of a title line with the column of their centre.
@@ -114,7 +98,7 @@ class LoopParser {
 
   MicromagLoopFile parse() {
     std::string_view line;
-    if (!lines_.next(line) || !is_format_line(line)) {
+    if (!lines_.next(line) || !is_micromag_format_line(line)) {
       throw Error(fmt::format(
           "{}: not a MicroMag data file (the first line is '{}', expected 'MicroMag 2900/3900 "
           "Data File (Series ...)')",
@@ -176,18 +160,15 @@ class LoopParser {
     std::string_view line = *pending_row_;
     pending_row_.reset();
     titles_.clear();
-    while (true) {
-      if (!is_comma_row(line)) break;
-      const auto fields = split_commas(line);
+    for (bool more = true; more && is_comma_row(line); more = next_content(line)) {
+      const auto fields = detail::split_fields(line, ',');
       for (std::size_t j = 0; j < fields.size(); ++j) {
         if (!parse_number(fields[j])) {
           throw Error(fmt::format("{}: segment table, field {}: '{}' is not a finite number",
-                                  location(source_, lines_.number()), j + 1, trim(fields[j])));
+                                  location(source_, lines_.number()), j + 1, fields[j]));
         }
       }
       ++rows;
-      if (!next_content(line)) line = {};
-      if (lines_ended_) break;
     }
     if (static_cast<double>(rows) != declared) {
       throw Error(fmt::format(
@@ -197,7 +178,7 @@ class LoopParser {
     file_.segments = rows;
     // Column titles: the text lines after the last blank line before the data.
     while (!lines_ended_ && !is_comma_row(line)) {
-      if (is_end_marker(line)) {
+      if (is_micromag_end_marker(line)) {
         throw Error(fmt::format("{}: the file has a segment table but no data rows",
                                 location(source_, lines_.number())));
       }
@@ -220,7 +201,7 @@ class LoopParser {
     while (true) {
       if (line.empty()) {
         segment_break = true;
-      } else if (is_end_marker(line)) {
+      } else if (is_micromag_end_marker(line)) {
         break;
       } else {
         if (!is_comma_row(line)) {
@@ -229,7 +210,7 @@ class LoopParser {
               "'MicroMag 2900/3900 Data File ends'",
               location(source_, lines_.number()), line, columns));
         }
-        const auto fields = split_commas(line);
+        const auto fields = detail::split_fields(line, ',');
         if (columns == 0) {
           columns = fields.size();
           if (columns < 2) {
@@ -251,7 +232,7 @@ class LoopParser {
           if (!value) {
             throw Error(fmt::format("{}: column {} ('{}'): '{}' is not a finite number",
                                     location(source_, lines_.number()), j + 1, file_.columns[j],
-                                    trim(fields[j])));
+                                    fields[j]));
           }
           file_.values[j].push_back(*value);
         }
@@ -273,10 +254,6 @@ class LoopParser {
     throw Error(fmt::format(
         "{}: the file ends without the line 'MicroMag 2900/3900 Data File ends' (truncated?)",
         location(source_, lines_.number())));
-  }
-
-  static bool is_end_marker(std::string_view content) {
-    return content.starts_with("MicroMag") && content.find(kEndMarker) != std::string_view::npos;
   }
 
   //! The next line, trimmed (raw_line_ keeps it untrimmed for the title alignment).
@@ -329,7 +306,7 @@ bool looks_like_micromag_loop(std::string_view text) {
   detail::LineReader lines(text);
   std::string_view first;
   std::string_view second;
-  return lines.next(first) && is_format_line(first) && lines.next(second) &&
+  return lines.next(first) && is_micromag_format_line(first) && lines.next(second) &&
          second.find("Hysteresis loop") != std::string_view::npos;
 }
 

@@ -59,6 +59,19 @@ inline std::optional<double> entry_number(const HeaderEntries& entries, std::str
   return text ? parse_number(*text) : std::nullopt;
 }
 
+//! The fields of a line between `separator`s, each trimmed; n separators give n + 1 fields.
+inline std::vector<std::string_view> split_fields(std::string_view line, char separator) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  while (true) {
+    const auto end = line.find(separator, start);
+    fields.push_back(
+        trim(line.substr(start, end == std::string_view::npos ? line.npos : end - start)));
+    if (end == std::string_view::npos) return fields;
+    start = end + 1;
+  }
+}
+
 //! "file:line", or "line N" for an unnamed source.
 inline std::string location(std::string_view source, std::size_t line) {
   return source.empty() ? fmt::format("line {}", line) : fmt::format("{}:{}", source, line);
