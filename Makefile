@@ -5,8 +5,11 @@
 #               every libFuzzer target (clang, see fuzz/ and docs/reliability.md).
 
 BUILD      ?= build
-ASAN_BUILD ?= build-asan
-FUZZ_BUILD ?= build-fuzz
+# One clang build serves the sanitizer tests and the fuzz targets: everything in it is compiled
+# with AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer's coverage instrumentation
+# (-fsanitize=fuzzer-no-link); the tests link the sanitizers' runtime, the fuzz targets libFuzzer's
+# main. Line tables are enough for the sanitizers' stack traces and cost less than full -g.
+CHECK_BUILD ?= build-check
 # Seconds each fuzz target runs in `make test` (docs/reliability.md has the counts of a run), from
 # a fixed seed: a run explores the same inputs in the same order on every machine (a faster one
 # gets further), so that a CI run repeats what a longer local run with that seed has explored.
@@ -25,7 +28,7 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config \
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test test-cpp test-python bench-smoke test-sanitize test-fuzz format format-check clean
+.PHONY: all deps configure build demo test test-cpp test-python bench-smoke check-build test-sanitize test-fuzz format format-check clean
 
 all: build
 
@@ -72,36 +75,35 @@ bench-smoke:
 	  echo "== $$b"; $$b --benchmark_min_time=0.001 > /dev/null; \
 	done; echo "benchmarks ran"
 
-test-sanitize: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHYST_SANITIZE=ON \
-	  -DHYST_BUILD_BENCHMARKS=OFF -DHYST_BUILD_EXAMPLES=OFF
-	cmake --build $(ASAN_BUILD) -j $(JOBS)
+check-build: deps
+	CXX=clang++ cmake -S . -B $(CHECK_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+	  -DHYST_SANITIZE=ON -DHYST_BUILD_FUZZERS=ON \
+	  -DHYST_BUILD_BENCHMARKS=OFF -DHYST_BUILD_EXAMPLES=OFF -DHYST_BUILD_PYTHON=OFF
+	cmake --build $(CHECK_BUILD) -j $(JOBS)
+
+test-sanitize: check-build
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+	  ctest --test-dir $(CHECK_BUILD) --output-on-failure -j $(JOBS)
 
 # Every libFuzzer target (fuzz/) for FUZZ_SECONDS from its committed seed corpus (fuzz/corpus/),
-# built with clang, AddressSanitizer and UndefinedBehaviorSanitizer in a build of its own (library,
-# command line and fuzz targets only). New inputs go to $(FUZZ_BUILD)/corpus/, crashes to
-# $(FUZZ_BUILD)/crashes/; the last line of each log has the number of executions. The folders are
+# from the clang build above. New inputs go to $(CHECK_BUILD)/corpus/, crashes to
+# $(CHECK_BUILD)/crashes/; the last line of each log has the number of executions. The folders are
 # absolute paths: fuzz_cli_arguments works in a scratch folder of its own.
-test-fuzz: deps
-	CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  -DCMAKE_CXX_COMPILER=clang++ -DHYST_BUILD_FUZZERS=ON -DHYST_BUILD_TESTS=OFF \
-	  -DHYST_BUILD_BENCHMARKS=OFF -DHYST_BUILD_EXAMPLES=OFF -DHYST_BUILD_PYTHON=OFF
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS)
+test-fuzz: check-build
 	@set -e; for t in $(FUZZ_TARGETS); do \
-	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/crashes/$$t; \
+	  mkdir -p $(CHECK_BUILD)/corpus/$$t $(CHECK_BUILD)/crashes/$$t; \
 	  echo "== $$t ($(FUZZ_SECONDS) s)"; \
 	  if ! ASAN_OPTIONS=detect_leaks=1 \
 	    UBSAN_OPTIONS=print_stacktrace=1 \
-	    $(FUZZ_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -seed=$(FUZZ_SEED) -rss_limit_mb=2048 \
+	    $(CHECK_BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -seed=$(FUZZ_SEED) -rss_limit_mb=2048 \
 	      -timeout=10 \
-	      -artifact_prefix=$(CURDIR)/$(FUZZ_BUILD)/crashes/$$t/ -print_final_stats=1 \
-	      $(CURDIR)/$(FUZZ_BUILD)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t > $(FUZZ_BUILD)/$$t.log 2>&1; then \
-	    tail -n 60 $(FUZZ_BUILD)/$$t.log; echo "$$t found a failure: see $(FUZZ_BUILD)/crashes/$$t"; \
+	      -artifact_prefix=$(CURDIR)/$(CHECK_BUILD)/crashes/$$t/ -print_final_stats=1 \
+	      $(CURDIR)/$(CHECK_BUILD)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t > $(CHECK_BUILD)/$$t.log 2>&1; then \
+	    tail -n 60 $(CHECK_BUILD)/$$t.log; echo "$$t found a failure: see $(CHECK_BUILD)/crashes/$$t"; \
 	    exit 1; \
 	  fi; \
-	  grep -E '^(stat::number_of_executed_units|Done)' $(FUZZ_BUILD)/$$t.log || true; \
+	  grep -E '^(stat::number_of_executed_units|Done)' $(CHECK_BUILD)/$$t.log || true; \
 	done; echo "fuzz targets ran without failure"
 
 format:
@@ -111,4 +113,4 @@ format-check:
 	git ls-files '*.hpp' '*.cpp' | xargs clang-format --dry-run --Werror
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(CHECK_BUILD) out
