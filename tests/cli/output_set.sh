@@ -48,8 +48,9 @@ record() {
 
 NAMES="ranking.md ranking.csv loops.png errors.png report.html"
 
+# compare_cmd DATA: the compare command line (for eval).
 compare_cmd() {
-  "$HYST" compare --data "$1" --input v --output y --models pi,gpi --out-dir cmp --html cmp/report.html
+  echo "\"$HYST\" compare --data $1 --input v --output y --models pi,gpi --out-dir cmp --html cmp/report.html"
 }
 
 # sums FOLDER NAMES...: one checksum (or "missing") per name, through the links.
@@ -63,10 +64,9 @@ sums() {
 
 # our_gnuplots: gnuplot processes started by a hyst of this test (by the marker in their environment).
 our_gnuplots() {
-  local proc
-  for proc in /proc/[0-9]*; do
-    [ "$(cat "$proc/comm" 2>/dev/null)" = gnuplot ] || continue
-    tr '\0' '\n' <"$proc/environ" 2>/dev/null | grep -qx "HYST_SET_TEST_MARK=$WORK" && echo "${proc#/proc/}"
+  local pid
+  for pid in $(pgrep -x gnuplot); do
+    tr '\0' '\n' 2>/dev/null <"/proc/$pid/environ" | grep -qx "HYST_SET_TEST_MARK=$WORK" && echo "$pid"
   done
 }
 
@@ -114,7 +114,7 @@ case_published() {
   record a.csv 1
   mkdir cmp
   printf 'mine\n' >cmp/notes.txt
-  compare_cmd a.csv >/dev/null 2>err.txt || fail "compare failed: $(cat err.txt)"
+  eval "$(compare_cmd a.csv)" >/dev/null 2>err.txt || fail "compare failed: $(cat err.txt)"
   local name
   for name in $NAMES; do
     [ -s "cmp/$name" ] || fail "cmp/$name is missing or empty"
@@ -138,7 +138,7 @@ case_old_plain_files() {
   mkdir cmp
   local name
   for name in $NAMES; do printf 'old %s\n' "$name" >"cmp/$name"; done
-  compare_cmd a.csv >/dev/null 2>err.txt || fail "compare failed: $(cat err.txt)"
+  eval "$(compare_cmd a.csv)" >/dev/null 2>err.txt || fail "compare failed: $(cat err.txt)"
   for name in $NAMES; do
     [ -L "cmp/$name" ] || fail "cmp/$name is still a plain file"
     grep -q '^old' "cmp/$name" && fail "cmp/$name still has the old content"
@@ -148,15 +148,16 @@ case_old_plain_files() {
   rm cmp/ranking.csv
   ln -s ../a.csv cmp/ranking.csv
   cp a.csv a.csv.orig
-  compare_cmd m.json >/dev/null 2>err.txt && fail "compare replaced a link elsewhere"
+  eval "$(compare_cmd m.json)" >/dev/null 2>err.txt && fail "compare replaced a link elsewhere"
   grep -q "same file as the input\|link elsewhere" err.txt || fail "unexpected message: $(cat err.txt)"
   cmp -s a.csv a.csv.orig || fail "the link's target was changed"
 }
 
-# kill_runs FOLDER NAMES CMD_A CMD_B: run CMD_A once (the old set), then start the other run and
-# SIGKILL it at fractions of a whole run and once while gnuplot draws; check after every kill.
+# kill_runs FOLDER NAMES CMD_A CMD_B STEPS: run CMD_A once (the old set), then start the other run
+# and SIGKILL it after each of STEPS tenths of a whole run, and while gnuplot draws ("gnuplot");
+# check after every kill.
 kill_runs() {
-  local folder=$1 names=$2 cmd_a=$3 cmd_b=$4
+  local folder=$1 names=$2 cmd_a=$3 cmd_b=$4 steps=$5
   local start end
   start=$(date +%s%N)
   eval "$cmd_a" >/dev/null 2>err.txt || fail "the first run failed: $(cat err.txt)"
@@ -167,18 +168,20 @@ kill_runs() {
   # shellcheck disable=SC2086
   old="$(sums "$folder" $names | tr '\n' ' ')"
   local current=a olds=0 news=0 gnuplot_kills=0 step
-  for step in 1 2 3 4 5 6 7 8 9 gnuplot gnuplot; do
+  for step in $steps; do
     local next=b cmd=$cmd_b
     [ "$current" = b ] && next=a cmd=$cmd_a
-    eval "$cmd" >/dev/null 2>&1 &
+    # exec: the background job is hyst itself, so that the kill reaches it.
+    eval "exec $cmd" >/dev/null 2>&1 &
     local pid=$!
     if [ "$step" = gnuplot ]; then
       local waited=0
-      while kill -0 "$pid" 2>/dev/null && [ -z "$(our_gnuplots)" ] && [ "$waited" -lt 4000 ]; do
-        sleep 0.005
-        waited=$((waited + 5))
+      while kill -0 "$pid" 2>/dev/null && ! pgrep -x -P "$pid" gnuplot >/dev/null &&
+        [ "$waited" -lt 4000 ]; do
+        sleep 0.002
+        waited=$((waited + 2))
       done
-      [ -n "$(our_gnuplots)" ] && gnuplot_kills=$((gnuplot_kills + 1))
+      pgrep -x -P "$pid" gnuplot >/dev/null && gnuplot_kills=$((gnuplot_kills + 1))
     else
       sleep "$(awk -v w="$whole" -v k="$step" 'BEGIN { printf "%.3f", w * k / 10000 }')"
     fi
@@ -212,7 +215,8 @@ case_killed() {
   record a.csv 1
   record b.csv 0.7
   mkdir cmp
-  kill_runs cmp "$NAMES" "compare_cmd a.csv" "compare_cmd b.csv"
+  kill_runs cmp "$NAMES" "$(compare_cmd a.csv)" "$(compare_cmd b.csv)" \
+    "1 2 3 4 5 6 7 8 9 10 12 15 gnuplot gnuplot"
 }
 
 case_actuator_killed() {
@@ -247,7 +251,7 @@ PY
   local names
   names="$(cd out && ls | tr '\n' ' ')"
   kill_runs out "$names" "\"$HYST\" actuator compare --config a.json --out-dir out" \
-    "\"$HYST\" actuator compare --config b.json --out-dir out"
+    "\"$HYST\" actuator compare --config b.json --out-dir out" "3 6 9 12 gnuplot"
 }
 
 case_name="${1:?usage: output_set.sh published|old_plain_files|killed|actuator_killed}"
