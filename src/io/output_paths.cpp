@@ -33,7 +33,7 @@ std::string resolve(const fs::path& path, OutputTarget& target) {
   for (int links = 0; links <= kMaxLinks; ++links) {
     struct stat status {};
     if (::lstat(current.c_str(), &status) != 0) {
-      if (errno != ENOENT) return reason(errno);
+      if (errno != ENOENT && errno != ENOTDIR) return reason(errno);
       const fs::path folder = current.parent_path().empty() ? fs::path(".") : current.parent_path();
       std::error_code error;
       const auto folder_status = fs::status(folder, error);
