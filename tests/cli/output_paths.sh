@@ -2,7 +2,8 @@
 # An output never replaces what it must not (hyst/io/output_paths.hpp), through the command line:
 #
 #   device       as root: --out naming a character device made with mknod in a temporary folder
-#                (never the system's /dev) is written through; the node stays a device.
+#                (never the system's /dev) is written through; the node stays a device. A full
+#                device (like /dev/full) gives one error line.
 #   fifo         --out naming a FIFO is written through (a reader gets the CSV); it stays a FIFO.
 #   symlink      --out naming a link: the target is replaced, the link kept (also a dangling one).
 #   hard_link    --out a hard link of the input: refused before any work, naming both paths.
@@ -100,6 +101,11 @@ case_device() {
   expect_ok "$HYST" data extract data.csv --columns v --out nul
   [ -c nul ] || fail "data extract replaced the device node"
   [ "$(find . -name '.nul*' | wc -l)" -eq 0 ] || fail "temporary files left: $(ls -la)"
+  # A device that refuses the data (like /dev/full): one error line, the node kept.
+  mknod full c 1 7 || fail "mknod full"
+  expect_refused "cannot write 'full': No space left on device (writing)" -- \
+    "$HYST" simulate --model m.json --input in.csv --out full
+  [ -c full ] || fail "the device node full was replaced"
 }
 
 case_fifo() {
