@@ -100,6 +100,18 @@ case_device() {
   [ -c nul ] || fail "plot replaced the device node"
   expect_ok "$HYST" data extract data.csv --columns v --out nul
   [ -c nul ] || fail "data extract replaced the device node"
+  expect_ok "$HYST" invert --model m.json --target data.csv --column y --out nul
+  [ -c nul ] || fail "invert replaced the device node"
+  mkdir cmp
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
+    --no-plots --html nul
+  [ -c nul ] || fail "compare --html replaced the device node"
+  # Inside a set folder a device is refused: the names of a set are links hyst manages.
+  rm -f cmp/ranking.csv
+  mknod cmp/ranking.csv c 1 3 || fail "mknod cmp/ranking.csv"
+  expect_refused "cmp/ranking.csv': it is not a regular file" -- \
+    "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp --no-plots
+  [ -c cmp/ranking.csv ] || fail "compare replaced the device node in its folder"
   [ "$(find . -name '.nul*' | wc -l)" -eq 0 ] || fail "temporary files left: $(ls -la)"
   # A device that refuses the data (like /dev/full): one error line, the node kept.
   mknod full c 1 7 || fail "mknod full"
