@@ -374,13 +374,15 @@ void write_image(const Figure& figure, const fs::path& png, Format format) {
   check_folder(png);
   const io::OutputTarget target = io::resolve_output(png);
 
-  // The temporary image lies beside its target (in a staging folder when the target is one).
-  const fs::path temporary =
-      temporary_path_for(target.kind == io::OutputKind::file ? target.path : png, format);
+  // The temporary image lies beside its target (in a staging folder when the target is one); for
+  // a device or FIFO, whose folder may not take files (/dev), in the temporary folder.
+  const bool special = target.kind == io::OutputKind::special;
+  const fs::path temporary = temporary_path_for(
+      special ? fs::temp_directory_path() / target.path.filename() : target.path, format);
   RemoveOnExit remove_temporary(temporary);
   render(figure, format, temporary, -1, png);
 
-  if (target.kind == io::OutputKind::special) {
+  if (special) {
     io::write_file_atomically(target.path, io::read_file(temporary));
     return;
   }
