@@ -11,7 +11,7 @@
 #                (--report = --out), are refused with one error line naming both; inputs intact.
 #   not_a_file   --out naming a folder or a socket is refused.
 #   stdout       '-' writes a text output to standard output (messages go to standard error);
-#                refused for an image.
+#                refused for an image; compare --html - prints the page.
 #
 #     HYST=build/apps/hyst bash tests/cli/output_paths.sh device
 #
@@ -247,6 +247,14 @@ case_stdout() {
     "$HYST" fit pi --data data.csv --input v --output y --out - --report -
   expect_refused "--out '-': standard output is for text outputs only" -- \
     "$HYST" plot --data data.csv --x v --y y --out -
+  if command -v gnuplot >/dev/null; then
+    mkdir cmp
+    expect_ok "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
+      --no-plots --html -
+    head -n 1 out.txt | grep -qx '<!DOCTYPE html>' || fail "compare --html -: no page: $(head -c 200 out.txt)"
+    grep -q '| 1 | pi |' err.txt || fail "compare --html -: the table did not go to standard error"
+    [ -s cmp/ranking.csv ] || fail "compare --html -: no ranking.csv"
+  fi
   [ ! -e ./- ] || fail "a file named '-' was written"
 }
 

@@ -91,7 +91,6 @@ void run(const CompareCommandOptions& options) {
   if (!std::filesystem::is_directory(folder)) {
     throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
   }
-  refuse_stdout(options.html, "--html");
   // The files in --out-dir (and --html when it lies there too) are published as one set
   // (hyst/io/output_set.hpp): a reader never sees new rankings beside old plots.
   std::vector<std::string> names{"ranking.md", "ranking.csv"};
@@ -99,7 +98,9 @@ void run(const CompareCommandOptions& options) {
   std::vector<io::NamedPath> outputs;
   for (const auto& name : names)
     outputs.push_back({folder / name, "--out-dir"});
-  const bool html_in_set = !options.html.empty() && in_folder(options.html, folder);
+  const bool html_on_stdout = is_stdout(options.html);
+  const bool html_in_set =
+      !options.html.empty() && !html_on_stdout && in_folder(options.html, folder);
   if (html_in_set) names.push_back(std::filesystem::path(options.html).filename().string());
   if (!options.html.empty()) outputs.push_back({options.html, "--html"});
   io::check_outputs({{options.data, "--data"}}, outputs);
@@ -112,7 +113,8 @@ void run(const CompareCommandOptions& options) {
   const auto markdown = model_comparison_markdown(comparison);
   io::write_file_atomically(set.staged("ranking.md"), markdown);
   io::write_file_atomically(set.staged("ranking.csv"), model_comparison_csv(comparison));
-  fmt::print("{}", markdown);
+  auto* messages = message_stream(html_on_stdout);
+  fmt::print(messages, "{}", markdown);
   std::string written =
       fmt::format("{} and {}", (folder / "ranking.md").string(), (folder / "ranking.csv").string());
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
@@ -131,14 +133,17 @@ void run(const CompareCommandOptions& options) {
                                       record.output, html_title);
   }
   set.publish();
-  if (!options.html.empty() && !html_in_set) {
+  if (html_on_stdout) {
+    write_text_output(options.html, plot::model_comparison_html(comparison, record.input,
+                                                                record.output, html_title));
+  } else if (!options.html.empty() && !html_in_set) {
     plot::write_model_comparison_html(options.html, comparison, record.input, record.output,
                                       html_title);
   }
   if (!options.html.empty()) {
     written += fmt::format("; {}", options.html);
   }
-  fmt::print("wrote {}\n", written);
+  fmt::print(messages, "wrote {}\n", written);
   for (const auto& row : comparison.ranking) {
     if (!row.ok) warn(fmt::format("model '{}' was not fitted: {}", row.model, row.error));
   }
@@ -173,8 +178,10 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
-  command->add_option("--html", options->html,
-                      "Also write one self-contained HTML page with the table and SVG plots");
+  command->add_option(
+      "--html", options->html,
+      "Also write one self-contained HTML page with the table and SVG plots ('-': standard "
+      "output)");
   command->footer(R"(Examples:
   hyst compare --data d.csv --input v --output y
   hyst compare --data d.csv --input v --output y --out-dir cmp --html cmp/report.html
