@@ -154,7 +154,7 @@ void OutputSet::publish() {
   fs::path migration = has_current ? folder_ / old_set : fs::path();
   for (const auto& name : names) {
     const fs::path path = folder_ / name;
-    if (!fs::is_regular_file(fs::symlink_status(path, error)) || fs::is_symlink(path)) continue;
+    if (!fs::is_regular_file(fs::symlink_status(path, error))) continue;  // not a link either
     if (migration.empty()) {
       migration = staging_;
       migration += ".old";
