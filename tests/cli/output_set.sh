@@ -251,7 +251,7 @@ PY
   local names
   names="$(cd out && ls | tr '\n' ' ')"
   kill_runs out "$names" "\"$HYST\" actuator compare --config a.json --out-dir out" \
-    "\"$HYST\" actuator compare --config b.json --out-dir out" "3 6 9 12 gnuplot"
+    "\"$HYST\" actuator compare --config b.json --out-dir out" "4 8 gnuplot"
 }
 
 case_name="${1:?usage: output_set.sh published|old_plain_files|killed|actuator_killed}"
