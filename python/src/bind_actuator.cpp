@@ -13,6 +13,7 @@
 #include "hyst/actuator/comparison.hpp"
 #include "hyst/actuator/linearised_plant.hpp"
 #include "hyst/control/pid.hpp"
+#include "hyst/io/output_set.hpp"
 
 namespace hyst::python {
 namespace {
@@ -121,8 +122,14 @@ void bind_actuator(py::module_& module) {
       .def(
           "compare",
           [](const ActuatorConfig& c, const std::optional<std::filesystem::path>& plot_folder) {
+            // The plots are published as one set (hyst/io/output_set.hpp).
+            std::optional<io::OutputSet> set;
+            if (plot_folder) set.emplace(*plot_folder, std::vector<std::string>{});
             const auto comparison = compare_strategies(c, scenario_references(c));
-            if (plot_folder) write_comparison_plots(comparison, *plot_folder);
+            if (set) {
+              write_comparison_plots(comparison, set->staged(""));
+              set->publish();
+            }
             py::list rows;
             for (const auto& run : comparison.runs) {
               auto row = metrics_to_dict(run.metrics);

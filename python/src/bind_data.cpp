@@ -24,6 +24,7 @@
 #include "hyst/io/aixacct.hpp"
 #include "hyst/io/csv.hpp"
 #include "hyst/io/data_file.hpp"
+#include "hyst/io/output_paths.hpp"
 
 namespace hyst::python {
 namespace {
@@ -250,6 +251,8 @@ void bind_files(py::module_& d) {
       "extract",
       [](const std::filesystem::path& path, const std::vector<std::string>& columns,
          std::optional<std::size_t> table, std::optional<std::filesystem::path> out) {
+        // Refused before reading: the output may not be the data file itself (also through links).
+        if (out) io::check_outputs({{path, "path"}}, {{*out, "out"}});
         auto extracted = io::DataFile(path, table).columns_table(columns);
         if (out) {
           extracted.source = out->string();

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/output_paths.hpp"
 
 namespace hyst::io {
 namespace {
@@ -94,14 +95,34 @@ struct FileCloser {
   void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
+//! A device or FIFO is written through: there is no file to replace, and renaming over it would
+//! replace the node itself (e.g. /dev/null by a regular file).
+void write_through(const fs::path& path, const fs::path& target, std::string_view content) {
+  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) fail_write(path, errno, fmt::format("opening '{}' for writing", target.string()));
+  const int error = write_all(fd, content);
+  // fsync only matters for block devices; character devices and FIFOs answer EINVAL.
+  if (!error && ::fsync(fd) != 0 && errno != EINVAL && errno != EROFS && errno != ENOTSUP) {
+    const int sync_error = errno;
+    ::close(fd);
+    fail_write(path, sync_error, "flushing to disk");
+  }
+  if (::close(fd) != 0 && !error) fail_write(path, errno, "closing");
+  if (error) fail_write(path, error, "writing");
+}
+
 }  // namespace
 
 void write_file_atomically(const fs::path& path, std::string_view content) {
-  if (path.filename().empty() || path.filename() == "." || path.filename() == "..") {
-    throw Error(fmt::format("cannot write '{}': the path does not name a file", path.string()));
+  // A symbolic link is followed: its target is replaced and the link kept.
+  const OutputTarget resolved = resolve_output(path);
+  if (resolved.kind == OutputKind::special) {
+    write_through(path, resolved.path, content);
+    return;
   }
+  const fs::path& target = resolved.path;
 
-  const fs::path temporary = temporary_path_for(path);
+  const fs::path temporary = temporary_path_for(target);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) {
     fail_write(path, errno, fmt::format("creating the temporary file '{}'", temporary.string()));
@@ -110,7 +131,7 @@ void write_file_atomically(const fs::path& path, std::string_view content) {
 
   // Keep the permission bits of a file being replaced (the new one would get the umask default).
   struct stat target_status {};
-  if (::stat(path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
+  if (::stat(target.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
     static_cast<void>(::fchmod(file.fd(), target_status.st_mode & 07777));  // best effort
   }
 
@@ -121,13 +142,13 @@ void write_file_atomically(const fs::path& path, std::string_view content) {
   if (const int error = file.close()) fail_write(path, error, "closing");
 
   std::error_code rename_error;
-  fs::rename(temporary, path, rename_error);
+  fs::rename(temporary, target, rename_error);
   if (rename_error) {
     throw Error(fmt::format("cannot write '{}': {} (renaming '{}' over it)", path.string(),
                             rename_error.message(), temporary.string()));
   }
   file.commit();
-  sync_folder(path.parent_path());
+  sync_folder(target.parent_path());
 }
 
 std::string read_file(const fs::path& path) {

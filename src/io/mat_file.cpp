@@ -19,6 +19,8 @@
 #include <fmt/ranges.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/output_paths.hpp"
 #include "mat_sizes.hpp"
 
 namespace hyst::io {
@@ -312,9 +314,14 @@ void write_mat_vectors(const fs::path& path,
     fail_write(path, "the path does not name a file");
   }
   validate_variables(path, variables);
+  // A link is followed (its target replaced); a device or FIFO is written through, from a
+  // temporary file in the temporary folder (matio writes files only).
+  const OutputTarget target = resolve_output(path);
+  const bool special = target.kind == OutputKind::special;
 
   // Reserve a unique temporary name (O_EXCL), then let matio write it.
-  const fs::path temporary_path = temporary_path_for(path);
+  const fs::path temporary_path = temporary_path_for(
+      special ? fs::temp_directory_path() / target.path.filename() : target.path);
   const int reserved =
       ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (reserved < 0) {
@@ -349,11 +356,16 @@ void write_mat_vectors(const fs::path& path,
     }
   }
 
+  if (special) {
+    write_file_atomically(target.path, read_file(temporary.path()));
+    return;
+  }
+
   // Flush to disk, keep the permission bits of a file being replaced, rename over the target.
   const int fd = ::open(temporary.path().c_str(), O_RDWR | O_CLOEXEC);
   if (fd < 0) fail_write(path, fmt::format("{} (reopening the temporary file)", reason(errno)));
   struct stat target_status {};
-  if (::stat(path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
+  if (::stat(target.path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
     static_cast<void>(::fchmod(fd, target_status.st_mode & 07777));  // best effort
   }
   int sync_result;
@@ -364,14 +376,15 @@ void write_mat_vectors(const fs::path& path,
   if (sync_result != 0) fail_write(path, fmt::format("{} (flushing to disk)", reason(sync_error)));
 
   std::error_code rename_error;
-  fs::rename(temporary.path(), path, rename_error);
+  fs::rename(temporary.path(), target.path, rename_error);
   if (rename_error) {
     fail_write(path, fmt::format("{} (renaming '{}' over it)", rename_error.message(),
                                  temporary.path().string()));
   }
   temporary.commit();
-  const int folder = ::open(path.parent_path().empty() ? "." : path.parent_path().c_str(),
-                            O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  const int folder =
+      ::open(target.path.parent_path().empty() ? "." : target.path.parent_path().c_str(),
+             O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (folder >= 0) {
     static_cast<void>(::fsync(folder));  // best effort: makes the rename durable
     ::close(folder);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/output_paths.hpp"
 
 namespace hyst::plot {
 namespace {
@@ -80,6 +81,7 @@ void write_model_comparison_plots(const ModelComparison& comparison, std::span<c
                                   std::span<const double> output,
                                   const std::filesystem::path& loop_png,
                                   const std::filesystem::path& error_png) {
+  io::check_outputs({}, {{loop_png, "loop_png"}, {error_png, "error_png"}});
   write_png(model_comparison_loop_figure(comparison, input, output), loop_png);
   write_png(model_comparison_error_figure(comparison, output), error_png);
 }

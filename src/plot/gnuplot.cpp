@@ -1,7 +1,7 @@
 #include "hyst/plot/gnuplot.hpp"
 
 #include <fcntl.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -12,9 +12,9 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
+#include <cstdlib>
 #include <memory>
 #include <string_view>
 #include <system_error>
@@ -23,6 +23,8 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/output_paths.hpp"
 
 extern char** environ;
 
@@ -122,7 +124,9 @@ std::string script_for(const Figure& figure, const fs::path& output, Format form
         "}}\n",
         size);
   }
-  script += fmt::format("set output {}\n", gnuplot_string(output.string()));
+  // No file name: the image goes to standard output.
+  script += output.empty() ? std::string("set output\n")
+                           : fmt::format("set output {}\n", gnuplot_string(output.string()));
   if (!figure.title.empty()) script += fmt::format("set title {}\n", gnuplot_string(figure.title));
   if (!figure.x_label.empty())
     script += fmt::format("set xlabel {}\n", gnuplot_string(figure.x_label));
@@ -172,46 +176,27 @@ struct FileCloser {
   void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
-//! posix_spawn file actions, destroyed on scope exit.
-class FileActions {
- public:
-  FileActions() {
-    if (const int error = ::posix_spawn_file_actions_init(&actions_)) {
-      throw Error(fmt::format("cannot start gnuplot: {}", reason(error)));
-    }
+//! The gnuplot program on the PATH, found before fork() so that the child only has to exec it.
+std::string find_gnuplot() {
+  const char* path = std::getenv("PATH");
+  const std::string_view folders = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= folders.size()) {
+    const auto end = std::min(folders.find(':', start), folders.size());
+    const auto folder = folders.substr(start, end - start);
+    const std::string candidate = fmt::format("{}/gnuplot", folder.empty() ? "." : folder);
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+    start = end + 1;
   }
-  FileActions(const FileActions&) = delete;
-  FileActions& operator=(const FileActions&) = delete;
-  ~FileActions() { ::posix_spawn_file_actions_destroy(&actions_); }
-  posix_spawn_file_actions_t* get() { return &actions_; }
+  throw Error("gnuplot is not installed or not on the PATH (Debian package gnuplot-nox)");
+}
 
- private:
-  posix_spawn_file_actions_t actions_;
-};
-
-//! Starts `gnuplot <args>` with the given descriptors as standard input and error (standard
-//! output goes to /dev/null); returns the process id or throws.
-pid_t spawn_gnuplot(const std::vector<std::string>& args, int stdin_fd, int stderr_fd) {
-  FileActions actions;
-  int error = 0;
-  if (stdin_fd >= 0) {
-    error = ::posix_spawn_file_actions_adddup2(actions.get(), stdin_fd, STDIN_FILENO);
-  } else {
-    error =
-        ::posix_spawn_file_actions_addopen(actions.get(), STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  }
-  if (!error) {
-    error =
-        ::posix_spawn_file_actions_addopen(actions.get(), STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  }
-  if (!error) {
-    error = stderr_fd >= 0
-                ? ::posix_spawn_file_actions_adddup2(actions.get(), stderr_fd, STDERR_FILENO)
-                : ::posix_spawn_file_actions_addopen(actions.get(), STDERR_FILENO, "/dev/null",
-                                                     O_WRONLY, 0);
-  }
-  if (error) throw Error(fmt::format("cannot start gnuplot: {}", reason(error)));
-
+//! Starts `gnuplot <args>` with the given descriptors as standard input, output and error (-1:
+//! /dev/null); returns the process id or throws. The child is killed when this process dies, so
+//! that a killed hyst leaves no gnuplot behind still writing (PR_SET_PDEATHSIG).
+pid_t spawn_gnuplot(const std::vector<std::string>& args, int stdin_fd, int stdout_fd,
+                    int stderr_fd) {
+  const std::string program = find_gnuplot();
   std::vector<std::string> storage{"gnuplot"};
   storage.insert(storage.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -219,12 +204,23 @@ pid_t spawn_gnuplot(const std::vector<std::string>& args, int stdin_fd, int stde
     argv.push_back(arg.data());
   argv.push_back(nullptr);
 
-  pid_t pid = 0;
-  error = ::posix_spawnp(&pid, "gnuplot", actions.get(), nullptr, argv.data(), environ);
-  if (error == ENOENT) {
-    throw Error("gnuplot is not installed or not on the PATH (Debian package gnuplot-nox)");
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Error(fmt::format("cannot start gnuplot: {}", reason(errno)));
+  if (pid == 0) {
+    // Only async-signal-safe calls from here on (the parent may have other threads).
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // the parent died before prctl()
+    const int null_fd = ::open("/dev/null", O_RDWR);
+    if (null_fd < 0) ::_exit(127);
+    if (::dup2(stdin_fd >= 0 ? stdin_fd : null_fd, STDIN_FILENO) < 0 ||
+        ::dup2(stdout_fd >= 0 ? stdout_fd : null_fd, STDOUT_FILENO) < 0 ||
+        ::dup2(stderr_fd >= 0 ? stderr_fd : null_fd, STDERR_FILENO) < 0) {
+      ::_exit(127);
+    }
+    ::execve(program.c_str(), argv.data(), environ);
+    ::_exit(127);
   }
-  if (error) throw Error(fmt::format("cannot start gnuplot: {}", reason(error)));
   return pid;
 }
 
@@ -313,7 +309,7 @@ void check_folder(const fs::path& png) {
 
 bool gnuplot_available() {
   try {
-    return wait_for(spawn_gnuplot({"--version"}, -1, -1)) == 0;
+    return wait_for(spawn_gnuplot({"--version"}, -1, -1, -1)) == 0;
   } catch (const Error&) {
     return false;
   }
@@ -321,14 +317,11 @@ bool gnuplot_available() {
 
 namespace {
 
-//! Renders the figure into `png` (an image file of the format, replaced atomically).
-void write_image(const Figure& figure, const fs::path& png, Format format) {
-  validate(figure);
-  check_folder(png);
-
-  const fs::path temporary = temporary_path_for(png, format);
-  RemoveOnExit remove_temporary(temporary);
-  const std::string script = script_for(figure, temporary, format);
+//! Runs gnuplot on the figure's script, the image going to `output` (a file) or, when it is
+//! empty, to `stdout_fd`. `shown` names the destination in messages.
+void render(const Figure& figure, Format format, const fs::path& output, int stdout_fd,
+            const fs::path& shown) {
+  const std::string script = script_for(figure, output, format);
 
   // gnuplot's standard error goes to an anonymous temporary file (read after it exits, so a
   // chatty gnuplot can never block on a full pipe while we are still writing the script).
@@ -344,7 +337,7 @@ void write_image(const Figure& figure, const fs::path& png, Format format) {
   }
   Descriptor ours(sockets[0]);
   Descriptor theirs(sockets[1]);
-  const pid_t pid = spawn_gnuplot({}, theirs.get(), ::fileno(errors.get()));
+  const pid_t pid = spawn_gnuplot({}, theirs.get(), stdout_fd, ::fileno(errors.get()));
   theirs.reset();
 
   std::string_view rest = script;
@@ -361,17 +354,40 @@ void write_image(const Figure& figure, const fs::path& png, Format format) {
 
   if (status != 0) {
     const auto messages = condensed(errors.get());
-    throw Error(fmt::format("cannot write '{}': gnuplot failed (exit status {}){}{}", png.string(),
-                            status, messages.empty() ? "" : ": ", messages));
+    throw Error(fmt::format("cannot write '{}': gnuplot failed (exit status {}){}{}",
+                            shown.string(), status, messages.empty() ? "" : ": ", messages));
   }
   std::error_code error;
-  const auto size = fs::file_size(temporary, error);
+  const auto size = output.empty() ? static_cast<std::uintmax_t>(::lseek(stdout_fd, 0, SEEK_END))
+                                   : fs::file_size(output, error);
   if (error || size == 0) {
     const auto messages = condensed(errors.get());
-    throw Error(fmt::format("cannot write '{}': gnuplot wrote no image{}{}", png.string(),
+    throw Error(fmt::format("cannot write '{}': gnuplot wrote no image{}{}", shown.string(),
                             messages.empty() ? "" : ": ", messages));
   }
-  fs::rename(temporary, png, error);
+}
+
+//! Renders the figure into `png` (an image file of the format). A link is followed and its
+//! target replaced atomically; a device or FIFO is written through (hyst/io/output_paths.hpp).
+void write_image(const Figure& figure, const fs::path& png, Format format) {
+  validate(figure);
+  check_folder(png);
+  const io::OutputTarget target = io::resolve_output(png);
+
+  // The temporary image lies beside its target (in a staging folder when the target is one); for
+  // a device or FIFO, whose folder may not take files (/dev), in the temporary folder.
+  const bool special = target.kind == io::OutputKind::special;
+  const fs::path temporary = temporary_path_for(
+      special ? fs::temp_directory_path() / target.path.filename() : target.path, format);
+  RemoveOnExit remove_temporary(temporary);
+  render(figure, format, temporary, -1, png);
+
+  if (special) {
+    io::write_file_atomically(target.path, io::read_file(temporary));
+    return;
+  }
+  std::error_code error;
+  fs::rename(temporary, target.path, error);
   if (error) {
     throw Error(fmt::format("cannot write '{}': {} (renaming '{}' over it)", png.string(),
                             error.message(), temporary.string()));
@@ -390,14 +406,20 @@ void write_svg(const Figure& figure, const fs::path& svg) {
 }
 
 std::string svg_element(const Figure& figure) {
-  const fs::path folder = fs::temp_directory_path();
-  const fs::path file = temporary_path_for(folder / "figure.svg", Format::svg);
-  RemoveOnExit remove_file(file);
-  write_svg(figure, file);
-  std::ifstream in(file, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  validate(figure);
+  // gnuplot writes to an anonymous file (no name, so nothing is left behind if we are killed).
+  const std::unique_ptr<std::FILE, FileCloser> image(std::tmpfile());
+  if (!image) throw Error(fmt::format("cannot render an SVG: {}", reason(errno)));
+  ::fcntl(::fileno(image.get()), F_SETFD, FD_CLOEXEC);
+  render(figure, Format::svg, {}, ::fileno(image.get()), "(SVG element)");
+  std::rewind(image.get());
+  std::string text;
+  char buffer[65536];
+  std::size_t count = 0;
+  while ((count = std::fread(buffer, 1, sizeof buffer, image.get())) > 0)
+    text.append(buffer, count);
+  if (std::ferror(image.get())) throw Error("cannot read the SVG gnuplot wrote");
   const auto start = text.find("<svg");
-  if (!in.good() && !in.eof()) throw Error("cannot read the SVG gnuplot wrote");
   if (start == std::string::npos) throw Error("gnuplot wrote no <svg> element");
   return text.substr(start);
 }

@@ -95,7 +95,8 @@ TEST_F(AtomicFileTest, RelativePathInTheCurrentFolder) {
 TEST_F(AtomicFileTest, MissingFolderThrowsNamingThePath) {
   const fs::path target = dir_ / "missing" / "out.csv";
   EXPECT_HYST_ERROR(write_file_atomically(target, "x"),
-                    fmt::format("cannot write '{}': No such file or directory", target.string()));
+                    fmt::format("cannot write '{}': the folder '{}' does not exist",
+                                target.string(), (dir_ / "missing").string()));
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
   EXPECT_TRUE(entries().empty());
 }
@@ -104,8 +105,9 @@ TEST_F(AtomicFileTest, ParentThatIsARegularFileThrowsAndLeavesThatFileAlone) {
   const fs::path existing = dir_ / "data.csv";
   put(existing, "t,v\n0,1\n");
   const fs::path target = existing / "out.csv";
-  EXPECT_HYST_ERROR(write_file_atomically(target, "new"),
-                    fmt::format("cannot write '{}': Not a directory", target.string()));
+  EXPECT_HYST_ERROR(
+      write_file_atomically(target, "new"),
+      fmt::format("cannot write '{}': '{}' is not a folder", target.string(), existing.string()));
   EXPECT_EQ(slurp(existing), "t,v\n0,1\n");
   EXPECT_EQ(entries(), std::vector<std::string>{"data.csv"});
 }
@@ -143,7 +145,7 @@ TEST_F(AtomicFileTest, ExistingFolderAsTargetThrowsAndIsKept) {
   const fs::path target = dir_ / "folder";
   fs::create_directory(target);
   EXPECT_HYST_ERROR(write_file_atomically(target, "x"),
-                    fmt::format("cannot write '{}': Is a directory (renaming '", target.string()));
+                    fmt::format("cannot write '{}': it is a folder, not a file", target.string()));
   EXPECT_TRUE(fs::is_directory(target));
   EXPECT_EQ(entries(), std::vector<std::string>{"folder"});
 }

@@ -336,8 +336,8 @@ TEST(WriteCsv, WritesAtomicallyAndReadsBackExactly) {
       fmt::format("cannot write '{}': column 2 ('v'), row 2: nan is not finite", path.string()));
   expect_identical(read_csv(path), table);
   EXPECT_HYST_ERROR(write_csv(dir / "missing" / "x.csv", table),
-                    fmt::format("cannot write '{}': No such file or directory",
-                                (dir / "missing" / "x.csv").string()));
+                    fmt::format("cannot write '{}': the folder '{}' does not exist",
+                                (dir / "missing" / "x.csv").string(), (dir / "missing").string()));
   fs::remove_all(dir);
 }
 

@@ -281,9 +281,8 @@ TEST_F(MatFile, RejectsInvalidVariablesToWrite) {
 
   const fs::path nowhere = file("no_such_folder") / "out.mat";
   EXPECT_HYST_ERROR(write_mat_vectors(nowhere, {{"a", {1}}}),
-                    "cannot write '" + nowhere.string() +
-                        "': No such file or directory (creating "
-                        "the temporary file");
+                    "cannot write '" + nowhere.string() + "': the folder '" +
+                        nowhere.parent_path().string() + "' does not exist");
   EXPECT_HYST_ERROR(write_mat_vectors(folder_ / "..", {{"a", {1}}}),
                     "the path does not name a file");
   EXPECT_TRUE(folder_entries().empty());

@@ -3,7 +3,9 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -15,6 +17,7 @@
 #include "hyst/control/tracking_metrics.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/csv.hpp"
+#include "hyst/io/output_set.hpp"
 #include "hyst/plot/gnuplot.hpp"
 
 namespace hyst::cli {
@@ -35,7 +38,8 @@ struct CompareOptions {
 
 void simulate(const SimulateOptions& options) {
   const auto strategy = control_strategy_from_string(options.strategy);
-  check_output_folder(options.out, "--out");
+  io::check_outputs({{options.config, "--config"}, {options.reference, "--reference"}},
+                    {{options.out, "--out"}});
   const auto config = load_actuator_config(options.config);
   const auto reference = control::reference_from_csv(options.reference, config.plant.sample_time);
   const auto trace = simulate_loop(config, strategy, reference.values);
@@ -48,19 +52,26 @@ void simulate(const SimulateOptions& options) {
   table.add_column("current", trace.current);
   table.add_column("force", trace.force);
   table.add_column("voltage", trace.voltage);
-  io::write_csv(options.out, table);
+  write_text_output(options.out, io::format_csv(table));
   const auto metrics = control::tracking_metrics(trace.reference, trace.measured, trace.voltage,
                                                  config.plant.sample_time, std::nullopt);
-  fmt::print(
-      "wrote {}: {} samples of {} under {}; RMS error {:.4g} m, max error {:.4g} m, RMS "
-      "voltage {:.4g} V\n",
-      options.out, trace.reference.size(), config.name, to_string(strategy), metrics.rms_error,
-      metrics.max_error, metrics.control_effort);
+  fmt::print(message_stream(is_stdout(options.out)),
+             "wrote {}: {} samples of {} under {}; RMS error {:.4g} m, max error {:.4g} m, RMS "
+             "voltage {:.4g} V\n",
+             options.out, trace.reference.size(), config.name, to_string(strategy),
+             metrics.rms_error, metrics.max_error, metrics.control_effort);
 }
 
 void compare(const CompareOptions& options) {
   const std::filesystem::path folder = options.out_dir;
-  if (!options.out_dir.empty()) check_output_folder(folder / "comparison.md", "--out-dir");
+  // The tables and plots in --out-dir are published as one set (hyst/io/output_set.hpp).
+  std::optional<io::OutputSet> set;
+  if (!options.out_dir.empty()) {
+    check_output_folder(folder / "comparison.md", "--out-dir");
+    io::check_outputs({{options.config, "--config"}}, {{folder / "comparison.md", "--out-dir"},
+                                                       {folder / "comparison.csv", "--out-dir"}});
+    set.emplace(folder, std::vector<std::string>{"comparison.md", "comparison.csv"});
+  }
   const auto config = load_actuator_config(options.config);
   const auto plant = LinearisedPlant::of(config.plant, config.loop.force_gain);
   fmt::print("{}: {}\n", config.name, config.description);
@@ -72,16 +83,19 @@ void compare(const CompareOptions& options) {
   const auto markdown = comparison_markdown(comparison);
   fmt::print("{}", markdown);
   if (options.out_dir.empty()) return;
-  io::write_file_atomically(folder / "comparison.md", markdown);
-  io::write_file_atomically(folder / "comparison.csv", comparison_csv(comparison));
+  io::write_file_atomically(set->staged("comparison.md"), markdown);
+  io::write_file_atomically(set->staged("comparison.csv"), comparison_csv(comparison));
+  const bool plots = !options.no_plots && plot::gnuplot_available();
+  std::vector<std::filesystem::path> written;
+  if (plots) written = write_comparison_plots(comparison, set->staged(""));
+  set->publish();
   fmt::print("\nwrote {} and {}\n", (folder / "comparison.md").string(),
              (folder / "comparison.csv").string());
   if (options.no_plots) return;
-  if (!plot::gnuplot_available()) {
+  if (!plots) {
     warn("gnuplot not found: no plots written (install gnuplot-nox, or pass --no-plots)");
     return;
   }
-  const auto written = write_comparison_plots(comparison, folder);
   fmt::print("wrote {} plots (tracking_*.png, error_*.png) into {}\n", written.size(),
              folder.string());
 }
@@ -105,7 +119,7 @@ void add_actuator_command(CLI::App& app) {
       ->required();
   sim->add_option("--out", simulate_options->out,
                   "CSV to write: t, reference, measured, position, current_reference, current, "
-                  "force, voltage")
+                  "force, voltage ('-': standard output)")
       ->required();
   sim->add_option("--strategy", simulate_options->strategy,
                   "open_loop, feedforward, pid or pid_feedforward (also pid+ff)")

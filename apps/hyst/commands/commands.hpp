@@ -3,15 +3,19 @@
 // subcommand to the application with a callback that does the work; main.cpp parses the command
 // line and turns every exception into one "hyst: error: ..." line (see main.cpp).
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/output_paths.hpp"
 
 namespace hyst::cli {
 
@@ -59,6 +63,35 @@ inline void check_output_folder(const std::filesystem::path& path, std::string_v
     throw Error(
         fmt::format("{} '{}': '{}' is not a folder", option, path.string(), folder.string()));
   }
+}
+
+//! "-" names standard output for the text outputs of the command line.
+inline bool is_stdout(std::string_view path) {
+  return path == "-";
+}
+
+//! Refuses "-" for an output that is not text (an image).
+inline void refuse_stdout(std::string_view path, std::string_view option) {
+  if (is_stdout(path)) {
+    throw Error(
+        fmt::format("{} '-': standard output is for text outputs only; name a file", option));
+  }
+}
+
+//! Writes a text output: to standard output for "-", else atomically to the file.
+inline void write_text_output(const std::string& path, std::string_view text) {
+  if (!is_stdout(path)) {
+    io::write_file_atomically(path, text);
+    return;
+  }
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+    throw Error("cannot write to standard output");
+  }
+}
+
+//! Where the "wrote ..." messages go: standard error when standard output carries an output.
+inline std::FILE* message_stream(bool output_on_stdout) {
+  return output_on_stdout ? stderr : stdout;
 }
 
 }  // namespace hyst::cli

@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "hyst/identify/compare.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/output_set.hpp"
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
@@ -74,6 +75,13 @@ std::map<std::string, nlohmann::json> fit_options(const std::vector<std::string>
   return options;
 }
 
+//! Does `file` lie directly in `folder` (the same folder, also through links)?
+bool in_folder(const std::filesystem::path& file, const std::filesystem::path& folder) {
+  const auto parent = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  std::error_code error;
+  return std::filesystem::equivalent(parent, folder, error) && !error;
+}
+
 void run(const CompareCommandOptions& options) {
   CompareOptions compare;
   if (!options.models.empty()) compare.models = split_list(options.models);
@@ -83,33 +91,59 @@ void run(const CompareCommandOptions& options) {
   if (!std::filesystem::is_directory(folder)) {
     throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
   }
-  if (!options.html.empty()) check_output_folder(options.html, "--html");
+  // The files in --out-dir (and --html when it lies there too) are published as one set
+  // (hyst/io/output_set.hpp): a reader never sees new rankings beside old plots.
+  std::vector<std::string> names{"ranking.md", "ranking.csv"};
+  if (!options.no_plots) names.insert(names.end(), {"loops.png", "errors.png"});
+  std::vector<io::NamedPath> outputs;
+  for (const auto& name : names)
+    outputs.push_back({folder / name, "--out-dir"});
+  const bool html_on_stdout = is_stdout(options.html);
+  const bool html_in_set =
+      !options.html.empty() && !html_on_stdout && in_folder(options.html, folder);
+  if (html_in_set) names.push_back(std::filesystem::path(options.html).filename().string());
+  if (!options.html.empty()) outputs.push_back({options.html, "--html"});
+  io::check_outputs({{options.data, "--data"}}, outputs);
+  io::OutputSet set(folder, names);
+
   const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
   const auto comparison = compare_models(record.input, record.output, compare);
 
   const auto markdown = model_comparison_markdown(comparison);
-  io::write_file_atomically(folder / "ranking.md", markdown);
-  io::write_file_atomically(folder / "ranking.csv", model_comparison_csv(comparison));
-  fmt::print("{}", markdown);
+  io::write_file_atomically(set.staged("ranking.md"), markdown);
+  io::write_file_atomically(set.staged("ranking.csv"), model_comparison_csv(comparison));
+  auto* messages = message_stream(html_on_stdout);
+  fmt::print(messages, "{}", markdown);
   std::string written =
       fmt::format("{} and {}", (folder / "ranking.md").string(), (folder / "ranking.csv").string());
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
                                       [](const ComparedModel& row) { return row.ok; });
   if (!options.no_plots && any_fitted) {
     plot::write_model_comparison_plots(comparison, record.input, record.output,
-                                       folder / "loops.png", folder / "errors.png");
+                                       set.staged("loops.png"), set.staged("errors.png"));
     written = fmt::format("{}, {}, {} and {}", (folder / "ranking.md").string(),
                           (folder / "ranking.csv").string(), (folder / "loops.png").string(),
                           (folder / "errors.png").string());
   }
-  if (!options.html.empty()) {
+  const auto html_title =
+      fmt::format("Model comparison: {} -> {} ({})", options.input, options.output, options.data);
+  if (html_in_set) {
+    plot::write_model_comparison_html(set.staged(names.back()), comparison, record.input,
+                                      record.output, html_title);
+  }
+  set.publish();
+  if (html_on_stdout) {
+    write_text_output(options.html, plot::model_comparison_html(comparison, record.input,
+                                                                record.output, html_title));
+  } else if (!options.html.empty() && !html_in_set) {
     plot::write_model_comparison_html(options.html, comparison, record.input, record.output,
-                                      fmt::format("Model comparison: {} -> {} ({})", options.input,
-                                                  options.output, options.data));
+                                      html_title);
+  }
+  if (!options.html.empty()) {
     written += fmt::format("; {}", options.html);
   }
-  fmt::print("wrote {}\n", written);
+  fmt::print(messages, "wrote {}\n", written);
   for (const auto& row : comparison.ranking) {
     if (!row.ok) warn(fmt::format("model '{}' was not fitted: {}", row.model, row.error));
   }
@@ -144,8 +178,10 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
-  command->add_option("--html", options->html,
-                      "Also write one self-contained HTML page with the table and SVG plots");
+  command->add_option(
+      "--html", options->html,
+      "Also write one self-contained HTML page with the table and SVG plots ('-': standard "
+      "output)");
   command->footer(R"(Examples:
   hyst compare --data d.csv --input v --output y
   hyst compare --data d.csv --input v --output y --out-dir cmp --html cmp/report.html

@@ -96,12 +96,12 @@ void run_info(const InfoOptions& options) {
 }
 
 void run_extract(const ExtractOptions& options) {
-  check_output_folder(options.out, "--out");
+  io::check_outputs({{options.file, "FILE"}}, {{options.out, "--out"}});
   auto table = io::DataFile(options.file, options.table).columns_table(options.columns);
   table.source = options.out;
-  io::write_csv(options.out, table);
-  fmt::print("wrote {}: {} columns ({}), {} rows\n", options.out, table.cols(),
-             fmt::join(table.names, ", "), table.rows());
+  write_text_output(options.out, io::format_csv(table));
+  fmt::print(message_stream(is_stdout(options.out)), "wrote {}: {} columns ({}), {} rows\n",
+             options.out, table.cols(), fmt::join(table.names, ", "), table.rows());
 }
 
 }  // namespace
@@ -152,7 +152,8 @@ one period: back to the first value, moving in the first direction.)");
                    "Columns (variables) to write, comma separated (default: all); aixACCT "
                    "columns by name (V+) or header (V+ [V])")
       ->delimiter(',');
-  extract_command->add_option("--out", extract->out, "CSV file to write")->required();
+  extract_command->add_option("--out", extract->out, "CSV file to write ('-': standard output)")
+      ->required();
   extract_command->footer(R"(Example:
   hyst data extract RMN_TRAP_SLOW.dat --table 6 --columns V+,P1 --out p.csv
   hyst fit pi --data p.csv --input V+ --output P1 --out p.json)");

@@ -138,8 +138,13 @@ void run(const FitOptions& options) {
                             models_that_can_fit(registry)));
   }
   auto fit_json = fit_options(options);
-  check_output_folder(options.out, "--out");
-  if (!options.report.empty()) check_output_folder(options.report, "--report");
+  std::vector<io::NamedPath> outputs{{options.out, "--out"}};
+  if (!options.report.empty()) outputs.push_back({options.report, "--report"});
+  std::vector<io::NamedPath> inputs{{options.data, "--data"}};
+  if (!options.validation_data.empty()) {
+    inputs.push_back({options.validation_data, "--validation-data"});
+  }
+  io::check_outputs(inputs, outputs);
 
   const auto prepare = preprocessing(options);
   const DataSource data(options.data, options.table);
@@ -214,11 +219,16 @@ void run(const FitOptions& options) {
   if (report.validation) info["validation"] = metrics_json(*report.validation);
   if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
 
-  save_model(options.out, *outcome.model, info);
-  if (!options.report.empty()) io::write_file_atomically(options.report, report.full());
+  if (is_stdout(options.out)) {
+    write_text_output(options.out, model_to_json(*outcome.model, info).dump(2) + "\n");
+  } else {
+    save_model(options.out, *outcome.model, info);
+  }
+  if (!options.report.empty()) write_text_output(options.report, report.full());
 
-  fmt::print("{}\n", report.brief());
-  fmt::print("wrote {}{}\n", options.out,
+  auto* messages = message_stream(is_stdout(options.out) || is_stdout(options.report));
+  fmt::print(messages, "{}\n", report.brief());
+  fmt::print(messages, "wrote {}{}\n", options.out,
              options.report.empty() ? "" : fmt::format(" and {}", options.report));
   if (report.termination != Termination::converged) {
     warn(fmt::format("the fit stopped before converging ({}): {}", to_string(report.termination),
@@ -240,7 +250,8 @@ void add_fit_command(CLI::App& app) {
   command->add_option("--input", options->input, "Input column (variable) of --data")->required();
   command->add_option("--output", options->output, "Output column (variable) of --data")
       ->required();
-  command->add_option("--out", options->out, "Model file to write (JSON)")->required();
+  command->add_option("--out", options->out, "Model file to write (JSON; '-': standard output)")
+      ->required();
   auto* fraction = command->add_option(
       "--validate-fraction", options->validate_fraction,
       "Hold out the last fraction F (0 < F < 1) of the record for validation (never shuffled)");
@@ -263,7 +274,8 @@ void add_fit_command(CLI::App& app) {
                    "One fit option key=value (repeatable; the value is JSON if it parses, "
                    "else a string); applied on top of --options")
       ->allow_extra_args(false);
-  command->add_option("--report", options->report, "Also write the full fit report (text)");
+  command->add_option("--report", options->report,
+                      "Also write the full fit report (text; '-': standard output)");
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command

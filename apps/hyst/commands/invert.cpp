@@ -33,6 +33,8 @@ void run(const InvertOptions& options) {
     throw Error(fmt::format("--input-min {} must be less than --input-max {}", options.input_min,
                             options.input_max));
   }
+  io::check_outputs({{options.model, "--model"}, {options.target, "--target"}},
+                    {{options.out, "--out"}});
   const auto model = load_model(options.model);
   if (!model->has_inverse()) {
     // inverse() says why (e.g. which weight breaks invertibility).
@@ -58,7 +60,6 @@ void run(const InvertOptions& options) {
         "--input-column '{}' is the name of the target column; choose another input name",
         options.input_column));
   }
-  check_output_folder(options.out, "--out");
 
   auto target = source.column(column);
   std::vector<double> input(target.size());
@@ -73,8 +74,9 @@ void run(const InvertOptions& options) {
   table.source = options.out;
   table.add_column(column, std::move(target));
   table.add_column(options.input_column, std::move(input));
-  io::write_csv(options.out, table);
-  fmt::print("wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
+  write_text_output(options.out, io::format_csv(table));
+  fmt::print(message_stream(is_stdout(options.out)),
+             "wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
              column, options.input_column);
   if (!report.ok()) {
     warn(fmt::format(
@@ -97,7 +99,9 @@ void add_invert_command(CLI::App& app) {
   command->add_option("--target", options->target, "Target output data: CSV or .mat")->required();
   command->add_option("--column", options->column,
                       "Target column (default: the only column, else the column 'y')");
-  command->add_option("--out", options->out, "Output CSV: the target column and the input column")
+  command
+      ->add_option("--out", options->out,
+                   "Output CSV: the target column and the input column ('-': standard output)")
       ->required();
   command->add_option("--input-column", options->input_column, "Name of the input column")
       ->capture_default_str();

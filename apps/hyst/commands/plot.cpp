@@ -38,7 +38,10 @@ void run(const PlotOptions& options) {
   if (loop && options.x.empty()) {
     throw Error("--kind loop needs --x, the input column (the loop is output over input)");
   }
-  check_output_folder(options.out, "--out");
+  refuse_stdout(options.out, "--out");
+  std::vector<io::NamedPath> inputs{{options.data, "--data"}};
+  if (!options.model.empty()) inputs.push_back({options.model, "--model"});
+  io::check_outputs(inputs, {{options.out, "--out"}});
   const DataSource source(options.data);
 
   std::vector<double> x;

@@ -23,6 +23,8 @@ struct SimulateOptions {
 };
 
 void run(const SimulateOptions& options) {
+  io::check_outputs({{options.model, "--model"}, {options.input, "--input"}},
+                    {{options.out, "--out"}});
   auto model = load_model(options.model);
   const DataSource source(options.input);
   const auto column = source.choose(options.column, "v", "--column");
@@ -31,7 +33,6 @@ void run(const SimulateOptions& options) {
         "--output-column '{}' is the name of the input column; choose another output name",
         options.output_column));
   }
-  check_output_folder(options.out, "--out");
 
   auto input = source.column(column);
   std::vector<double> output(input.size());
@@ -46,8 +47,9 @@ void run(const SimulateOptions& options) {
   table.source = options.out;
   table.add_column(column, std::move(input));
   table.add_column(options.output_column, std::move(output));
-  io::write_csv(options.out, table);
-  fmt::print("wrote {}: {} samples of '{}' (input) and '{}' ({} model from {})\n", options.out,
+  write_text_output(options.out, io::format_csv(table));
+  fmt::print(message_stream(is_stdout(options.out)),
+             "wrote {}: {} samples of '{}' (input) and '{}' ({} model from {})\n", options.out,
              table.rows(), column, options.output_column, model->name(), options.model);
 }
 
@@ -62,7 +64,9 @@ void add_simulate_command(CLI::App& app) {
       ->required();
   command->add_option("--column", options->column,
                       "Input column (default: the only column, else the column 'v')");
-  command->add_option("--out", options->out, "Output CSV: the input column and the output column")
+  command
+      ->add_option("--out", options->out,
+                   "Output CSV: the input column and the output column ('-': standard output)")
       ->required();
   command->add_option("--output-column", options->output_column, "Name of the output column")
       ->capture_default_str();

@@ -7,6 +7,10 @@
 //! (fsync), closed and then renamed over the target in one step. A reader sees either the old
 //! file or the complete new one. On failure the temporary file is removed and the target, if it
 //! existed, is left as it was.
+//!
+//! The output path is resolved first (output_paths.hpp): a symbolic link is followed and its
+//! target replaced (the temporary file goes into the target's folder; the link stays), and a
+//! device or FIFO is written through (opened for writing, no temporary file, no rename).
 
 #include <filesystem>
 #include <string>
@@ -15,7 +19,8 @@
 namespace hyst::io {
 
 //! Replaces (or creates) the file at `path` with `content`, atomically. An existing file keeps its
-//! permission bits. The folder must exist. Throws hyst::Error naming the path and the reason,
+//! permission bits. The folder must exist. A link is followed; a device or FIFO is written
+//! through; a folder or socket is refused. Throws hyst::Error naming the path and the reason,
 //! e.g. "cannot write 'out/fit.csv': No such file or directory (creating the temporary file
 //! 'out/.fit.csv.tmp.4711.0')".
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);

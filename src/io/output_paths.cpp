@@ -1,0 +1,130 @@
+#include "hyst/io/output_paths.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <optional>
+#include <system_error>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+
+namespace hyst::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The limit of the Linux kernel for one path (MAXSYMLINKS).
+constexpr int kMaxLinks = 40;
+
+std::string reason(int error_number) {
+  return std::generic_category().message(error_number);
+}
+
+//! Resolves `path`; on failure returns why (a message without the path) and leaves `target`.
+std::string resolve(const fs::path& path, OutputTarget& target) {
+  if (path.filename().empty() || path.filename() == "." || path.filename() == "..") {
+    return "the path does not name a file";
+  }
+  fs::path current = path;
+  for (int links = 0; links <= kMaxLinks; ++links) {
+    struct stat status {};
+    if (::lstat(current.c_str(), &status) != 0) {
+      if (errno != ENOENT && errno != ENOTDIR) return reason(errno);
+      const fs::path folder = current.parent_path().empty() ? fs::path(".") : current.parent_path();
+      std::error_code error;
+      const auto folder_status = fs::status(folder, error);
+      if (!fs::exists(folder_status)) {
+        return fmt::format("the folder '{}' does not exist", folder.string());
+      }
+      if (!fs::is_directory(folder_status)) {
+        return fmt::format("'{}' is not a folder", folder.string());
+      }
+      target = {current, OutputKind::file};
+      return {};
+    }
+    if (S_ISLNK(status.st_mode)) {
+      std::error_code error;
+      const fs::path next = fs::read_symlink(current, error);
+      if (error) return error.message();
+      current = next.is_absolute() ? next : current.parent_path() / next;
+      continue;
+    }
+    if (S_ISREG(status.st_mode)) {
+      target = {current, OutputKind::file};
+      return {};
+    }
+    if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) || S_ISFIFO(status.st_mode)) {
+      target = {current, OutputKind::special};
+      return {};
+    }
+    if (S_ISDIR(status.st_mode)) return "it is a folder, not a file";
+    if (S_ISSOCK(status.st_mode)) return "it is a socket; hyst does not write to sockets";
+    return "it is neither a file, a device nor a FIFO";
+  }
+  return "too many levels of symbolic links";
+}
+
+//! Identifies the file an output will be: (device, inode) of an existing file, else (device,
+//! inode) of its folder and its name, so that "a/../x" and "x" compare equal before they exist.
+using Identity = std::tuple<dev_t, ino_t, std::string>;
+
+std::optional<Identity> identity_of(const fs::path& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0) return Identity{status.st_dev, status.st_ino, ""};
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  if (::stat(folder.c_str(), &status) != 0) return std::nullopt;
+  return Identity{status.st_dev, status.st_ino, path.filename().string()};
+}
+
+std::string named(const NamedPath& path) {
+  return fmt::format("{} '{}'", path.name, path.path.string());
+}
+
+}  // namespace
+
+OutputTarget resolve_output(const fs::path& path) {
+  OutputTarget target;
+  if (const auto why = resolve(path, target); !why.empty()) {
+    throw Error(fmt::format("cannot write '{}': {}", path.string(), why));
+  }
+  return target;
+}
+
+void check_outputs(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
+  std::vector<std::optional<Identity>> seen;
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    const auto& output = outputs[k];
+    std::optional<Identity> identity;
+    if (output.path == "-") {
+      identity = Identity{0, 0, "-"};  // standard output: only equal to another "-"
+    } else {
+      OutputTarget target;
+      if (const auto why = resolve(output.path, target); !why.empty()) {
+        throw Error(fmt::format("{}: {}", named(output), why));
+      }
+      identity = identity_of(target.path);
+      for (const auto& input : inputs) {
+        if (input.path == "-") continue;
+        struct stat status {};
+        if (::stat(input.path.c_str(), &status) != 0) continue;
+        if (identity == Identity{status.st_dev, status.st_ino, ""}) {
+          throw Error(fmt::format("{} is the same file as the input {}; choose another output",
+                                  named(output), named(input)));
+        }
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (identity && seen[j] == identity) {
+        throw Error(fmt::format("{} and {} are the same file; choose two different outputs",
+                                named(outputs[j]), named(output)));
+      }
+    }
+    seen.push_back(identity);
+  }
+}
+
+}  // namespace hyst::io
