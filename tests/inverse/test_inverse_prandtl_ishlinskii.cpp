@@ -180,6 +180,47 @@ TEST(InversePrandtlIshlinskii, ReportsSaturationInsteadOfThrowing) {
   EXPECT_EQ(to_string(InverseStatus::above_range), "above_range");
 }
 
+// Equal weights c on equally spaced thresholds r_j = j h: S_j = c (j + 1), so in closed form
+// rh_j = c h j (j + 1) / 2 and ph_j = -1 / (c j (j + 1)) for j > 0. 10^5 operators: the inverse is
+// built in linear time (the nested sums took seconds).
+TEST(InversePrandtlIshlinskii, ClosedFormParametersForManyEqualOperators) {
+  constexpr std::size_t m = 100000;
+  constexpr double c = 0.25;
+  constexpr double h = 1e-3;
+  std::vector<double> r(m);
+  for (std::size_t j = 0; j < m; ++j)
+    r[j] = static_cast<double>(j) * h;
+  const InversePrandtlIshlinskii inverse(PrandtlIshlinskii({r, std::vector<double>(m, c)}));
+  const auto& rh = inverse.inverse_operator().params().thresholds;
+  const auto& ph = inverse.inverse_operator().params().weights;
+  EXPECT_EQ(ph[0], 4.0);
+  for (const std::size_t j : {std::size_t{1}, std::size_t{2}, std::size_t{777}, m / 2, m - 1}) {
+    const double jd = static_cast<double>(j);
+    EXPECT_NEAR(rh[j], c * h * jd * (jd + 1.0) / 2.0, 1e-12 * c * h * jd * (jd + 1.0)) << j;
+    EXPECT_NEAR(ph[j], -1.0 / (c * jd * (jd + 1.0)), 1e-12 / (c * jd * (jd + 1.0))) << j;
+  }
+}
+
+// A subnormal weight p_0 = 1e-320 is a valid forward model, but 1/p_0 overflows: the inverse is
+// refused, naming the weight as written, not its overflowed inverse ("p[0] = inf").
+TEST(InversePrandtlIshlinskii, RefusesWeightsWhoseInverseOverflows) {
+  const PrandtlIshlinskii tiny({{0, 1}, {1e-320, 1.0}});
+  EXPECT_TRUE(tiny.is_invertible());
+  EXPECT_HYST_ERROR(InversePrandtlIshlinskii{tiny},
+                    "PI weight p[0] = 1e-320 is too small for the inverse: its inverse weight "
+                    "1/p[0] overflows");
+  try {
+    static_cast<void>(InversePrandtlIshlinskii(tiny));
+  } catch (const Error& error) {
+    EXPECT_EQ(error.field(), "weights[0]");
+    EXPECT_EQ(std::string(error.what()).find("inf"), std::string::npos) << error.what();
+  }
+  // The smallest normal weight still has a finite inverse 1/p_0 = 4.49e307.
+  const InversePrandtlIshlinskii smallest(
+      PrandtlIshlinskii({{0, 1}, {2.2250738585072014e-308, 1}}));
+  EXPECT_EQ(smallest.inverse_operator().params().weights[0], 1.0 / 2.2250738585072014e-308);
+}
+
 TEST(InversePrandtlIshlinskii, RejectsModelsWithoutInverse) {
   EXPECT_HYST_ERROR(InversePrandtlIshlinskii(PrandtlIshlinskii({{0, 1}, {-0.5, 1.0}})),
                     "PI weight p[0] = -0.5 must be > 0 for the inverse to exist");
