@@ -11,7 +11,12 @@ namespace {
 
 // A literal that C reads as floating point: "1" becomes "1.0".
 std::string with_point(std::string text) {
-  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  // A plain loop: find_first_of calls memchr on the set once per character (5 10^6 numbers for a
+  // PI of 10^6 operators).
+  const bool has_point = std::any_of(text.begin(), text.end(), [](char c) {
+    return c == '.' || c == 'e' || c == 'E' || c == 'n';
+  });
+  if (!has_point) text += ".0";
   return text;
 }
 
@@ -50,9 +55,12 @@ std::string CWriter::expand(std::string_view text) const {
   out.reserve(text.size() + text.size() / 8);
   std::size_t i = 0;
   while (i < text.size()) {
-    const std::size_t mark = text.find_first_of("@$#", i);
-    out.append(text.substr(i, mark == std::string_view::npos ? text.size() - i : mark - i));
-    if (mark == std::string_view::npos) break;
+    // A plain loop: find_first_of calls memchr on the set once per character of the text.
+    std::size_t mark = i;
+    while (mark < text.size() && text[mark] != '@' && text[mark] != '$' && text[mark] != '#')
+      ++mark;
+    out.append(text.substr(i, mark - i));
+    if (mark == text.size()) break;
     i = mark;
     const char c = text[i];
     if (c == '@') {
