@@ -9,10 +9,20 @@
 //! within [input_min, input_max] (infinite by default); a target outside what the limits reach
 //! gives the limit and a below_range / above_range status.
 //!
+//! Every search is bounded, so a target the model cannot reach (a saturating Bouc-Wen asked for
+//! 1e300) costs a bounded number of steps and is answered with the reachable extreme and a status:
+//! - the bracket grows from the first step 1e-3 max(1, |v_now|) by doubling, at most 64 steps, and
+//!   no further than the search span 2^50 first steps (about 1.1e12 max(1, |v_now|)) or the
+//!   model's `max_input_jump()` where it has one (Bouc-Wen's RK4: the jump it integrates stably);
+//! - three doubling steps in a row that leave the output unchanged (within 8 eps) mean
+//!   saturation; an output that is not finite ends the search at the last finite one;
+//! - the answer is checked by re-simulating: an output further than 1e-9 max(|y*|, |y_now|) +
+//!   1e-6 |y* - y_now| from the target is reported as out of reach (below_range / above_range).
+//!
 //! Compared with NumericalInverse (numerical_inverse.hpp), which needs a finite range, this one
-//! needs none but only serves increasing maps. Cost: a few dozen model steps per sample; no
-//! allocation. Models whose output is not monotone in the next input (the dynamic Bouc-Wen
-//! oscillator) are not inverted this way.
+//! needs none but only serves increasing maps. Cost: a few dozen model steps per sample, at most
+//! max_expansions() + 604; no allocation. Models whose output is not monotone in the next input
+//! (the dynamic Bouc-Wen oscillator) are not inverted this way.
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +59,7 @@ class MonotoneInverse {
   const M& model() const { return model_; }
 
   //! The input that makes the model produce `target` from `state`, which is advanced with it.
-  //! Never allocates; at most max_expansions() + 603 model steps. Precondition: `target` is
+  //! Never allocates; at most max_expansions() + 604 model steps. Precondition: `target` is
   //! finite.
   InverseSample solve(State& state, double target) const {
     const auto output_at = [&](double input) {
