@@ -114,10 +114,11 @@ void add_invert_command(CLI::App& app) {
       v.csv gets the columns y (the target) and v (the input). The inverse starts consistent
       with the model file's state. Targets that need an input outside the limits get the
       nearest limit, and a warning line says how many samples saturated and where the first is.
-      A numerical inverse (Preisach, KP, Ikuta SMA, Bouc-Wen, Duhem, ...) searches at most
-      about 1e12 max(1, |v|) away from the last input; a target the model cannot reach there
-      (e.g. above a saturating Bouc-Wen's force bound) gets the input of the nearest reachable
-      output and counts as saturated. With --strict such samples make the exit status 1.)");
+      The numerical inverses search a bounded range (Preisach: its input range; Bouc-Wen,
+      Duhem, backlash-like, Jiles-Atherton without limits: about 1e12 max(1, |v|) around the
+      input they start from); a target the model cannot reach there (e.g. above a saturating
+      Bouc-Wen's force bound) gets the input of the nearest reachable output and counts as
+      saturated. With --strict such samples make the exit status 1.)");
   command->callback([options] { run(*options); });
 }
 
