@@ -42,6 +42,13 @@ void exercise(const hyst::DynamicModel& loaded) {
       const auto inverse = model->inverse({-10.0, 10.0});
       std::array<double, kInput.size()> inputs{};
       static_cast<void>(inverse->invert(output, inputs));
+      // Out-of-reach targets: answered within the limits by a bounded search, never a hang.
+      static constexpr std::array<double, 2> kFar = {1e300, -1e300};
+      std::array<double, kFar.size()> far{};
+      static_cast<void>(inverse->invert(kFar, far));
+      for (const double value : far) {
+        if (!(value >= -10.0 && value <= 10.0)) std::abort();
+      }
     } catch (const hyst::Error&) {
     }
   }

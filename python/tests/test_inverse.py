@@ -98,3 +98,23 @@ def test_repr_and_copy(model):
     assert "input_max=3)" in repr(inverse)
     twin = copy.deepcopy(inverse)
     np.testing.assert_array_equal(twin.invert([0.1, 0.2])[0], inverse.invert([0.1, 0.2])[0])
+
+
+def test_unreachable_bouc_wen_targets_are_reported_not_searched_forever():
+    # Without linear spring (alpha_k = 0) the force stays below k z0 = 2 (z0 = 1): 1e6, 1e300 and
+    # -1e300 are out of reach; the inverse answers with the saturated input and counts them.
+    params = {"a": 1.0, "beta": 0.6, "gamma": 0.4, "n": 1.5, "stiffness": 2.0, "alpha_k": 0.0}
+    model = hyst.Model("bouc_wen", params)
+    inputs, report = model.inverse().invert([0.5, 1e6, 1e300, -1e300])
+    assert report.saturated_samples == 3 and report.first_saturated == 1
+    assert not report.ok
+    assert np.all(np.isfinite(inputs)) and np.all(np.abs(inputs) < 1e3)
+    forces = hyst.Model("bouc_wen", params).simulate(inputs)
+    np.testing.assert_allclose(forces, [0.5, 2.0, 2.0, -2.0], atol=1e-9)
+
+
+def test_subnormal_weight_refused_by_the_inverse_as_written():
+    model = hyst.PrandtlIshlinskii([0.0, 1.0], [1e-320, 1.0])
+    with pytest.raises(hyst.Error, match=r"PI weight p\[0\] = 1e-320 is too small") as caught:
+        hyst.InversePrandtlIshlinskii(model)
+    assert "inf" not in str(caught.value)

@@ -1,6 +1,7 @@
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -28,18 +29,42 @@ std::vector<double> checked_partial_sums(const std::vector<double>& p) {
   return sums;
 }
 
+// rh_j = sum_{i<=j} p_i (r_j - r_i) by the recurrence rh_j = rh_{j-1} + S_{j-1} (r_j - r_{j-1})
+// (linear in the number of operators; every term is >= 0 as S_j > 0). A parameter set whose
+// inverse over- or underflows (e.g. a subnormal p_0, whose 1/p_0 is inf) is refused with the
+// forward values as the model holds them.
 PrandtlIshlinskii::Params inverse_params(const PrandtlIshlinskii::Params& forward,
                                          const std::vector<double>& sums) {
   const auto& r = forward.thresholds;
   const auto& p = forward.weights;
   const std::size_t n = r.size();
   PrandtlIshlinskii::Params inverse{std::vector<double>(n), std::vector<double>(n), 0.0};
+  double threshold = 0.0;
   for (std::size_t j = 0; j < n; ++j) {
-    double threshold = 0.0;
-    for (std::size_t i = 0; i <= j; ++i)
-      threshold += p[i] * (r[j] - r[i]);
+    if (j > 0) threshold += sums[j - 1] * (r[j] - r[j - 1]);
+    if (!std::isfinite(threshold)) {
+      throw Error(fmt::format("PI inverse threshold rh[{}] = sum_{{i<={}}} p[i] (r[{}] - r[i]) "
+                              "overflows (r[{}] = {}, S[{}] = {}): the inverse cannot be "
+                              "represented in double",
+                              j, j, j, j, r[j], j, sums[j]),
+                  fmt::format("weights[{}]", j));
+    }
     inverse.thresholds[j] = threshold;
-    inverse.weights[j] = j == 0 ? 1.0 / p[0] : -p[j] / (sums[j] * sums[j - 1]);
+    const double weight = j == 0 ? 1.0 / p[0] : -(p[j] / sums[j]) / sums[j - 1];
+    if (!std::isfinite(weight) || (p[j] != 0.0 && weight == 0.0)) {
+      if (j == 0) {
+        throw Error(fmt::format("PI weight p[0] = {} is too small for the inverse: its inverse "
+                                "weight 1/p[0] overflows (p[0] must be >= {})",
+                                p[0], 1.0 / std::numeric_limits<double>::max()),
+                    "weights[0]");
+      }
+      throw Error(fmt::format("PI weight p[{}] = {} gives the inverse weight -p[{}] / (S[{}] "
+                              "S[{}]) = {} with S[{}] = {} and S[{}] = {}: the inverse cannot be "
+                              "represented in double",
+                              j, p[j], j, j, j - 1, weight, j, sums[j], j - 1, sums[j - 1]),
+                  fmt::format("weights[{}]", j));
+    }
+    inverse.weights[j] = weight;
   }
   return inverse;
 }

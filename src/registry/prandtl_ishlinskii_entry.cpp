@@ -7,6 +7,7 @@
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
+#include "pi_batch_inverse.hpp"
 
 namespace hyst::detail {
 namespace {
@@ -14,6 +15,22 @@ namespace {
 nlohmann::json play_state_to_json(const PrandtlIshlinskii::State& state) {
   return {{"play", state.play}};
 }
+
+// The inverse PI of `hyst invert` and Python: batches in O(log m) per sample
+// (pi_batch_inverse.hpp).
+class PiInverseAdapter final : public DynamicInverse {
+ public:
+  PiInverseAdapter(InversePrandtlIshlinskii inverse, PrandtlIshlinskii::State state)
+      : inverse_(std::move(inverse)), state_(std::move(state)) {}
+  InverseReport invert(std::span<const double> targets, std::span<double> inputs) override {
+    return invert_pi_batch(inverse_, state_, targets, inputs);
+  }
+  nlohmann::json state() const override { return play_state_to_json(state_); }
+
+ private:
+  InversePrandtlIshlinskii inverse_;
+  PrandtlIshlinskii::State state_;
+};
 
 struct PrandtlIshlinskiiCodec {
   using Model = PrandtlIshlinskii;
@@ -56,9 +73,7 @@ struct PrandtlIshlinskiiCodec {
                                                       const InverseLimits& limits) {
     InversePrandtlIshlinskii inverse(model, {limits.input_min, limits.input_max});
     auto inverse_state = inverse.state_consistent_with(state);
-    return std::make_unique<
-        InverseAdapter<InversePrandtlIshlinskii, decltype(&play_state_to_json)>>(
-        std::move(inverse), std::move(inverse_state), &play_state_to_json);
+    return std::make_unique<PiInverseAdapter>(std::move(inverse), std::move(inverse_state));
   }
 };
 

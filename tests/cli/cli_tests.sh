@@ -440,6 +440,43 @@ case_invert_saturation() {
     "$HYST" invert --model known.json --target ramp.csv --out v3.csv --input-min 1 --input-max -1
 }
 
+case_invert_unreachable() {
+  # Bouc-Wen without linear spring: |F| < k z0 = 2 (z0 = 1). Targets 1e6, 1e300 and -1e300 are out
+  # of reach: the inverse answers quickly with the input of the saturated force, one warning line
+  # counts them; --strict turns that into exit status 1 (the output is still written).
+  printf '{"model": "bouc_wen", "version": 1, "params": {"a": 1, "beta": 0.6, "gamma": 0.4,
+    "n": 1.5, "stiffness": 2, "alpha_k": 0}}\n' >bw.json
+  printf 'y\n0.5\n1e6\n1e300\n-1e300\n1\n' >far.csv
+  run "$HYST" invert --model bw.json --target far.csv --out v.csv
+  [ "$STATUS" -eq 0 ] || { fail "exit status $STATUS"; show invert; }
+  [ "$(wc -l <"$WORK/stderr")" -eq 1 ] || fail "expected one warning line: $(cat "$WORK/stderr")"
+  grep -q "^hyst: warning: 3 of 5 samples saturated.*first at sample 1" "$WORK/stderr" ||
+    fail "warning: $(cat "$WORK/stderr")"
+  awk -F, 'NR > 1 && !($2 > -1e3 && $2 < 1e3) { bad = 1 } END { exit bad }' v.csv ||
+    fail "v.csv has inputs beyond the saturation: $(cat v.csv)"
+  # The inputs drive the model to the reachable extremes: +-2 for the far targets.
+  awk -F, 'NR > 1 { print $2 }' v.csv | { echo v; cat; } >v_only.csv
+  expect_ok "$HYST" simulate --model bw.json --input v_only.csv --column v --out f.csv
+  awk -F, 'NR == 3 || NR == 4 { d = $2 - 2 } NR == 5 { d = $2 + 2 } NR == 2 { d = $2 - 0.5 }
+    NR > 1 && NR < 6 { if (d < 0) d = -d; if (d > 1e-9) bad = 1 } END { exit bad }' f.csv ||
+    fail "forces of the inputs: $(cat f.csv)"
+  expect_error 1 "3 of 5 samples saturated" "(--strict)" -- \
+    "$HYST" invert --model bw.json --target far.csv --out v2.csv --strict
+  [ -s v2.csv ] || fail "--strict did not write v2.csv"
+}
+
+case_invert_subnormal_weight() {
+  # 1e-320 is a valid (subnormal) PI weight, but 1/p[0] overflows: the inverse is refused with
+  # the weight as the file writes it, never "p[0] = inf".
+  write_pi_model tiny.json "[0, 1]" "[1e-320, 1]" 0
+  printf 'y\n0.5\n' >t.csv
+  expect_error 1 "PI weight p[0] = 1e-320 is too small for the inverse" -- \
+    "$HYST" invert --model tiny.json --target t.csv --out v.csv
+  grep -q "inf" "$WORK/stderr" && fail "message names an infinity: $(cat "$WORK/stderr")"
+  mkdir -p c_out
+  expect_error 1 "p[0] = 1e-320" -- "$HYST" export --model tiny.json --lang c --out c_out
+}
+
 case_plot() {
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
   write_input_csv in.csv

@@ -25,6 +25,7 @@ struct InvertOptions {
   std::string input_column = "v";
   double input_min = -std::numeric_limits<double>::infinity();
   double input_max = std::numeric_limits<double>::infinity();
+  bool strict = false;
 };
 
 void run(const InvertOptions& options) {
@@ -79,11 +80,13 @@ void run(const InvertOptions& options) {
              "wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
              column, options.input_column);
   if (!report.ok()) {
-    warn(fmt::format(
-        "{} of {} samples saturated at the input limits [{}, {}] (first at sample {}): the "
-        "model cannot reach those targets within the limits",
+    const std::string message = fmt::format(
+        "{} of {} samples saturated: out of reach within the input limits [{}, {}] and the "
+        "model's reach (first at sample {}); their inputs are the nearest reachable ones",
         report.saturated_samples, table.rows(), options.input_min, options.input_max,
-        report.first_saturated));
+        report.first_saturated);
+    if (options.strict) throw Error(message + " (--strict)");
+    warn(message);
   }
 }
 
@@ -108,11 +111,18 @@ void add_invert_command(CLI::App& app) {
   command->add_option("--input-min", options->input_min, "Lowest admissible input (default: none)");
   command->add_option("--input-max", options->input_max,
                       "Highest admissible input (default: none)");
+  command->add_flag("--strict", options->strict,
+                    "Exit with status 1 when a target is out of reach (the output is written)");
   command->footer(R"(Example:
   hyst invert --model m.json --target y.csv --column y --out v.csv --input-min -10 --input-max 10
       v.csv gets the columns y (the target) and v (the input). The inverse starts consistent
       with the model file's state. Targets that need an input outside the limits get the
-      nearest limit, and a warning line says how many samples saturated and where the first is.)");
+      nearest limit, and a warning line says how many samples saturated and where the first is.
+      The numerical inverses search a bounded range (Preisach: its input range; Bouc-Wen,
+      Duhem, backlash-like, Jiles-Atherton without limits: about 1e12 max(1, |v|) around the
+      input they start from); a target the model cannot reach there (e.g. above a saturating
+      Bouc-Wen's force bound) gets the input of the nearest reachable output and counts as
+      saturated. With --strict such samples make the exit status 1.)");
   command->callback([options] { run(*options); });
 }
 

@@ -40,6 +40,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
@@ -65,6 +67,20 @@ inline T bouc_wen_advance(const T& a, const T& beta, const T& gamma, const T& n,
     return std::array<T, 1>{a - s * beta * (state[0] < 0.0 ? -power : power) - gamma * power};
   };
   std::array<T, 1> x{z};
+  if constexpr (std::is_same_v<T, double>) {
+    if (!(tolerance > 0.0)) {
+      // RK4 as rk4_integrate, but a sub-step that leaves z unchanged ends the loop: the equation
+      // is autonomous and h fixed, so every further sub-step would leave it unchanged too (same
+      // result, bit for bit; a large jump after saturation costs a few hundred sub-steps).
+      const double h = dx / static_cast<double>(steps);
+      for (std::size_t i = 0; i < steps; ++i) {
+        const double before = x[0];
+        rk4_step(x, h, 0.0, 0.0, rhs);
+        if (x[0] == before) break;
+      }
+      return x[0];
+    }
+  }
   integrate_sample(x, T(dx), steps, tolerance, rhs);
   return x[0];
 }
@@ -152,6 +168,14 @@ class BoucWen {
   double output(const State& state) const {
     return params_.alpha_k * params_.stiffness * state.input +
            (1.0 - params_.alpha_k) * params_.stiffness * state.hysteretic;
+  }
+
+  //! The largest input change one step() integrates faithfully: unlimited for n = 1 (exact) and
+  //! the adaptive scheme; 10^6 max_input_step for RK4, whose sub-steps are capped at 10^6 and
+  //! would grow past the stable length beyond it. The numerical inverse searches within it.
+  double max_input_jump() const noexcept {
+    return params_.n == 1.0 || params_.tolerance > 0.0 ? std::numeric_limits<double>::infinity()
+                                                       : 1e6 * max_input_step_;
   }
 
   //! Advances one sample (input linear between the samples) and returns F. No allocation.
