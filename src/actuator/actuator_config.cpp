@@ -7,6 +7,7 @@
 
 #include "../detail/json_fields.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/json_text.hpp"
 
 namespace hyst {
 namespace {
@@ -181,17 +182,7 @@ ActuatorConfig actuator_config_from_json(const nlohmann::json& document, std::st
 }
 
 ActuatorConfig load_actuator_config(const std::filesystem::path& path) {
-  const std::string text = io::read_file(path);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    std::string message = error.what();  // "[json.exception.parse_error.101] parse error at ..."
-    if (const auto tag_end = message.find("] "); tag_end != std::string::npos) {
-      message = message.substr(tag_end + 2);
-    }
-    throw Error(fmt::format("{}: not valid JSON: {}", path.string(), message));
-  }
+  const nlohmann::json document = io::parse_json_text(io::read_file(path), path.string());
   return actuator_config_from_json(document, path.string());
 }
 
