@@ -108,20 +108,26 @@ ResampledRecord resample_by_arc_length(std::span<const double> input,
         x_range, y_range));
   }
   const auto found = branches(input, band);
-  std::vector<double> position(input.size());
+  // Branches share their end points, so the lengths are added up before the positions are set.
   std::vector<double> lengths;
+  for (const auto& branch : found) {
+    double length = 0.0;
+    for (std::size_t k = branch.first + 1; k <= branch.last; ++k) {
+      length +=
+          std::hypot((input[k] - input[k - 1]) / x_range, (output[k] - output[k - 1]) / y_range);
+    }
+    lengths.push_back(length);
+  }
+  check_sample_count(lengths, step, "arc length step");
+  ResampledRecord out;
+  std::vector<double> position(input.size());
+  bool first_branch = true;
   for (const auto& branch : found) {
     position[branch.first] = 0.0;
     for (std::size_t k = branch.first + 1; k <= branch.last; ++k) {
       position[k] = position[k - 1] + std::hypot((input[k] - input[k - 1]) / x_range,
                                                  (output[k] - output[k - 1]) / y_range);
     }
-    lengths.push_back(position[branch.last]);
-  }
-  check_sample_count(lengths, step, "arc length step");
-  ResampledRecord out;
-  bool first_branch = true;
-  for (const auto& branch : found) {
     append_branch(position, input, output, branch, interval_count(position[branch.last], step),
                   !first_branch, out);
     first_branch = false;
