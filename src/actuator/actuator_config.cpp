@@ -8,6 +8,7 @@
 #include "../detail/json_fields.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/io/limits.hpp"
 
 namespace hyst {
 namespace {
@@ -167,6 +168,13 @@ ActuatorConfig parse(const nlohmann::json& document) {
   std::optional<AnyHysteresis> compensator;
   LoopParams loop = loop_from_json(required(fields, "control"), plant, hysteresis, compensator);
   ScenarioParams scenarios = scenarios_from_json(required(fields, "scenarios"));
+  // The lead-in becomes a sample count (compare_strategies); bound it before any conversion.
+  if (const double samples = scenarios.lead_in / plant.sample_time;
+      !(samples <= io::limits::kMaxDerivedSamples)) {
+    throw Error(fmt::format(
+        "scenarios.lead_in = {} s is {:.4g} samples of h = {} s, more than the limit of {:.0f}",
+        scenarios.lead_in, samples, plant.sample_time, io::limits::kMaxDerivedSamples));
+  }
   fields.finish();
   return {name, description, plant, hysteresis, compensator.value_or(hysteresis), loop, scenarios};
 }

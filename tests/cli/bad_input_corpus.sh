@@ -138,12 +138,16 @@ brace = text.index("{")
 open("config_duplicate.json", "w").write(text[:brace + 1] + '"x": 1, "x": 2, ' + text[brace + 1:])
 open("config_deep.json", "w").write(
     text[:brace + 1] + '"x": ' + "[" * 1000 + "]" * 1000 + ", " + text[brace + 1:])
+open("config_lead_in.json", "w").write(text.replace('"lead_in": 0.05', '"lead_in": 1e300'))
 PY
 printf 't,r\n0,0\n0.001,0.1\n' >reference.csv
 check_error config_duplicate.json "config_duplicate.json:1:10: duplicate key 'x'" "$HYST" \
   actuator simulate --config config_duplicate.json --reference reference.csv --out out.csv
 check_error config_deep.json "JSON nesting deeper than 256 levels" "$HYST" actuator simulate \
   --config config_deep.json --reference reference.csv --out out.csv
+mkdir -p compare_out
+check_error config_lead_in.json "scenarios.lead_in = 1e+300 s is" "$HYST" actuator compare \
+  --config config_lead_in.json --out-dir compare_out --no-plots
 # An endless stream: a FIFO fed from /dev/zero stops at the 256 MiB input limit.
 mkfifo endless.csv
 timeout 20 sh -c 'cat /dev/zero >endless.csv' 2>/dev/null &
