@@ -29,10 +29,14 @@ struct Frame {
   std::unordered_map<std::string, Position> keys;
 };
 
-//! A key for a message: cut after 60 bytes.
+//! A key or path for a one-line message: cut after 60 bytes, control characters (a decoded
+//! "\n" or "\u0000") shown as '?'.
 std::string shown(std::string_view key) {
-  if (key.size() <= 60) return std::string(key);
-  return fmt::format("{}...' ({} bytes)", key.substr(0, 60), key.size());
+  std::string text(key.substr(0, 60));
+  for (char& c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) c = '?';
+  }
+  return key.size() > 60 ? text + "..." : text;
 }
 
 //! The key a string token stands for: escapes decoded when it has any ("\u0061" is "a").
@@ -79,8 +83,18 @@ void check_json_text(std::string_view text, std::string_view source) {
       ++at.column;
     }
   };
+  // nlohmann's parser takes a NUL byte for the end of the input and ignores what follows it;
+  // JSON text never holds one (not even in a string), so it is refused where it stands.
+  const auto refuse_nul = [&](char c) {
+    if (c != '\0') return;
+    throw Error(
+        fmt::format("{}:{}:{}: a NUL byte, which JSON text does not contain (a binary "
+                    "file?)",
+                    source, at.line, at.column));
+  };
   while (i < text.size()) {
     const char c = text[i];
+    refuse_nul(c);
     if (c == '"') {
       const Position start = at;
       const std::size_t begin = i;
@@ -89,9 +103,11 @@ void check_json_text(std::string_view text, std::string_view source) {
       bool closed = false;
       while (i < text.size()) {
         const char d = text[i];
+        refuse_nul(d);
         advance(d);
         ++i;
         if (d == '\\' && i < text.size()) {
+          refuse_nul(text[i]);
           advance(text[i]);
           ++i;
         } else if (d == '"') {

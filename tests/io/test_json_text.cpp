@@ -52,6 +52,13 @@ TEST(JsonText, RefusesDuplicateKeysNamingKeyObjectAndBothPlaces) {
   // The same key written with an escape is the same key.
   EXPECT_EQ(error_of("{\"model\": 1, \"\\u006dodel\": 2}"),
             "t.json:1:14: duplicate key 'model' (first at line 1, column 2)");
+  // A key with a line break or a NUL stays on one line; a long one is cut.
+  EXPECT_EQ(error_of("{\"a\\nb\\u0000\": 1, \"a\\nb\\u0000\": 2}"),
+            "t.json:1:19: duplicate key 'a?b?' (first at line 1, column 2)");
+  const std::string key(100, 'k');
+  EXPECT_EQ(
+      error_of("{\"" + key + "\": 1, \"" + key + "\": 2}"),
+      "t.json:1:109: duplicate key '" + key.substr(0, 60) + "...' (first at line 1, column 2)");
   // Equal keys in different objects, and equal values, are fine.
   EXPECT_NO_THROW(parse_json_text(R"({"a": {"x": 1}, "b": {"x": "x"}, "c": ["x", "x"]})", "t"));
   EXPECT_NO_THROW(parse_json_text(R"([{"x": 1}, {"x": 2}])", "t"));
@@ -62,6 +69,15 @@ TEST(JsonText, SyntaxErrorsAndOverflowKeepTheirMessages) {
             "t.json: not valid JSON: number overflow parsing '1e400' at line 1, column 7");
   EXPECT_NE(error_of("{\"a\": [1, }").find("t.json: not valid JSON: parse error at line 1"),
             std::string::npos);
+}
+
+// Found by fuzz_json_entry_points: nlohmann's parser stops at a NUL byte, so that a model file
+// followed by a NUL and anything at all was read without complaint.
+TEST(JsonText, RefusesNulBytesWhereTheyStand) {
+  using namespace std::string_literals;
+  EXPECT_EQ(error_of("{\"a\": 1}\n\0garbage"s),
+            "t.json:2:1: a NUL byte, which JSON text does not contain (a binary file?)");
+  EXPECT_EQ(error_of("[\"x\0\"]"s).substr(0, 12), "t.json:1:4: ");
 }
 
 TEST(TextEncoding, Utf16AndUtf32AreNamed) {
