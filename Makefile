@@ -15,7 +15,8 @@ CHECK_BUILD ?= build-check
 # gets further), so that a CI run repeats what a longer local run with that seed has explored.
 FUZZ_SECONDS ?= 20
 FUZZ_SEED    ?= 1
-FUZZ_TARGETS := fuzz_csv fuzz_mat_file fuzz_model_file fuzz_instrument_files fuzz_cli_arguments
+FUZZ_TARGETS := fuzz_csv fuzz_mat_file fuzz_model_file fuzz_instrument_files fuzz_json_entry_points \
+  fuzz_cli_arguments
 JOBS       ?= $(shell nproc)
 DEMO_OUT   ?= out/demo
 

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include <fmt/format.h>
@@ -96,6 +97,13 @@ int run_cli(int argc, const char* const* argv) {
     return parse_and_run(argc, argv);
   } catch (const hyst::Error& error) {
     print_error(error.what());
+  } catch (const std::bad_alloc&) {
+    // The big reads name their file and size themselves; this is the last resort.
+    std::string command;
+    for (int k = 1; k < argc; ++k)
+      command += fmt::format("{}{}", k > 1 ? " " : "", argv[k]);
+    if (command.size() > 200) command = command.substr(0, 200) + "...";
+    print_error(fmt::format("out of memory running 'hyst {}'", command));
   } catch (const std::exception& error) {
     print_error(fmt::format("unexpected failure: {}", error.what()));
   } catch (...) {

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/io/limits.hpp"
 
 #ifndef HYST_VERSION
 #define HYST_VERSION "unknown"
@@ -97,7 +98,19 @@ py::object json_to_python(const nlohmann::json& value) {
   }
 }
 
+namespace {
+
+nlohmann::json python_to_json(py::handle value, const std::string& path, std::size_t depth);
+
+}  // namespace
+
 nlohmann::json python_to_json(py::handle value, const std::string& path) {
+  return python_to_json(value, path, 0);
+}
+
+namespace {
+
+nlohmann::json python_to_json(py::handle value, const std::string& path, std::size_t depth) {
   if (value.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::int_>(value)) {
@@ -109,7 +122,17 @@ nlohmann::json python_to_json(py::handle value, const std::string& path) {
   }
   if (py::isinstance<py::float_>(value)) return value.cast<double>();
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (py::isinstance<py::array>(value)) return python_to_json(value.attr("tolist")(), path);
+  if (py::isinstance<py::array>(value)) {
+    return python_to_json(value.attr("tolist")(), path, depth);
+  }
+  const bool container = py::isinstance<py::dict>(value) || py::isinstance<py::list>(value) ||
+                         py::isinstance<py::tuple>(value);
+  if (container && depth >= io::limits::kMaxJsonDepth) {
+    // A list that contains itself would recurse for ever, a very deep one end the stack.
+    throw Error(fmt::format("{}: nested deeper than {} levels (the limit of hyst's JSON values)",
+                            path.empty() ? "<value>" : path.substr(0, 200),
+                            io::limits::kMaxJsonDepth));
+  }
   if (py::isinstance<py::dict>(value)) {
     auto object = nlohmann::json::object();
     for (const auto& [key, item] : value.cast<py::dict>()) {
@@ -118,7 +141,7 @@ nlohmann::json python_to_json(py::handle value, const std::string& path) {
                                 py::repr(key).cast<std::string>()));
       }
       const auto name = key.cast<std::string>();
-      object[name] = python_to_json(item, path.empty() ? name : path + "." + name);
+      object[name] = python_to_json(item, path.empty() ? name : path + "." + name, depth + 1);
     }
     return object;
   }
@@ -126,15 +149,17 @@ nlohmann::json python_to_json(py::handle value, const std::string& path) {
     auto array = nlohmann::json::array();
     std::size_t index = 0;
     for (const auto& item : value)
-      array.push_back(python_to_json(item, fmt::format("{}[{}]", path, index++)));
+      array.push_back(python_to_json(item, fmt::format("{}[{}]", path, index++), depth + 1));
     return array;
   }
   if (py::isinstance(value, py::module_::import("numpy").attr("generic"))) {
-    return python_to_json(value.attr("item")(), path);  // numpy scalar
+    return python_to_json(value.attr("item")(), path, depth);  // numpy scalar
   }
   throw Error(fmt::format("{}: a {} cannot be stored as JSON", path.empty() ? "<value>" : path,
                           py::type::of(value).attr("__name__").cast<std::string>()));
 }
+
+}  // namespace
 
 }  // namespace hyst::python
 

@@ -3,6 +3,7 @@ of every registered model's example file raise hyst.Error through Python - never
 exception, a crash or a hang - with a message that names the file and the place."""
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -56,6 +57,9 @@ def test_corpus_file_raises_hyst_error(name, how, text, tmp_path):
             hyst.load_model(path).simulate([0.0, 0.5, 1.0, 0.2])
         else:
             use_as_data(path, tmp_path / "out.csv")
+            if how == "fit":  # data that reads, but cannot be fitted (constant, 2 samples)
+                columns = hyst.io.read_csv(path)
+                hyst.fit("pi", columns["v"], columns["y"])
     message = str(error.value)
     assert message and "\n" not in message.strip()
 
@@ -86,3 +90,75 @@ def test_binary_noise_raises_hyst_error(tmp_path):
         path.write_bytes(noise)
         with pytest.raises(hyst.Error):
             read(path)
+
+
+# Limits (include/hyst/io/limits.hpp): JSON nesting, duplicate keys, input bytes, sample counts.
+
+def nested_dict(depth):
+    """{"a": {"a": ... 1}} built without recursion."""
+    value = 1
+    for _ in range(depth):
+        value = {"a": value}
+    return value
+
+
+def test_deeply_nested_python_values_raise_hyst_error():
+    # 30 000 levels used to end the interpreter (stack overflow in the dict -> JSON conversion).
+    deep = nested_dict(30000)
+    with pytest.raises(hyst.Error, match="nested deeper than 256 levels"):
+        hyst.Model("pi", deep)
+    with pytest.raises(hyst.Error, match=r"^info\.a\.a.*nested deeper than 256 levels"):
+        hyst.model_to_dict(example_model(), info=deep)
+    with pytest.raises(hyst.Error, match="nested deeper than 256 levels"):
+        hyst.ActuatorConfig(deep)
+    with pytest.raises(hyst.Error, match="nested deeper than 256 levels"):
+        hyst.fit("pi", [0.0, 1.0, 0.0, 1.0], [0.0, 1.0, 0.5, 1.0], operators=deep)
+    endless = []
+    endless.append(endless)  # a list that contains itself
+    with pytest.raises(hyst.Error, match=r"thresholds\[0\]\[0\].*nested deeper than 256"):
+        hyst.Model("pi", {"thresholds": endless, "weights": [1.0]})
+    # 255 levels below the params object are still fine to convert (and then rejected as params).
+    with pytest.raises(hyst.Error, match="expected"):
+        hyst.Model("pi", {"thresholds": nested_dict(254), "weights": [1.0]})
+
+
+def test_model_file_nested_100000_levels_names_file_line_column(tmp_path):
+    path = tmp_path / "deep.json"
+    path.write_text('{"model": "pi", "version": 1, "params": {"thresholds": [0], '
+                    '"weights": [1]},\n "info": ' + '{"a": ' * 100000 + "1" + "}" * 100000 + "}")
+    with pytest.raises(hyst.Error,
+                       match=r"deep\.json:2:1540: JSON nesting deeper than 256 levels"):
+        hyst.load_model(path)
+
+
+def test_duplicate_keys_name_key_and_both_places(tmp_path):
+    path = tmp_path / "dup.json"
+    path.write_text('{"model": "pi", "version": 1,\n "params": {"thresholds": [0, 0.5], '
+                    '"weights": [1, 0.5],\n   "weights": [2, 1]}}')
+    with pytest.raises(hyst.Error) as error:
+        hyst.load_model(path)
+    assert str(error.value).endswith(
+        "dup.json:3:4: duplicate key 'weights' in 'params' (first at line 2, column 37)")
+
+
+def test_endless_stream_stops_at_the_input_limit(tmp_path):
+    fifo = tmp_path / "endless.csv"
+    os.mkfifo(fifo)
+    writer = subprocess.Popen(["sh", "-c", f"cat /dev/zero > '{fifo}'"],
+                              stderr=subprocess.DEVNULL)
+    try:
+        with pytest.raises(hyst.Error) as error:
+            hyst.io.read_csv(fifo)
+        assert str(error.value) == (f"cannot read '{fifo}': it holds more than 268435456 bytes, "
+                                    "the limit of one input (an endless stream?)")
+    finally:
+        writer.kill()
+        writer.wait()
+
+
+def test_resampling_step_beyond_the_sample_limit_raises_hyst_error():
+    v = [0.0, 1.0, 0.0, 1.0, 0.0] * 4
+    y = [0.0, 0.8, 0.1, 0.9, 0.0] * 4
+    for step in (1e-6, 1e-17, 1e-300):
+        with pytest.raises(hyst.Error, match="more than the limit of 10000000"):
+            hyst.fit("pi", v, y, resample="input-grid", resample_step=step)

@@ -7,6 +7,8 @@
 
 #include "../detail/json_fields.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/json_text.hpp"
+#include "hyst/io/limits.hpp"
 
 namespace hyst {
 namespace {
@@ -166,6 +168,13 @@ ActuatorConfig parse(const nlohmann::json& document) {
   std::optional<AnyHysteresis> compensator;
   LoopParams loop = loop_from_json(required(fields, "control"), plant, hysteresis, compensator);
   ScenarioParams scenarios = scenarios_from_json(required(fields, "scenarios"));
+  // The lead-in becomes a sample count (compare_strategies); bound it before any conversion.
+  if (const double samples = scenarios.lead_in / plant.sample_time;
+      !(samples <= io::limits::kMaxDerivedSamples)) {
+    throw Error(fmt::format(
+        "scenarios.lead_in = {} s is {:.4g} samples of h = {} s, more than the limit of {:.0f}",
+        scenarios.lead_in, samples, plant.sample_time, io::limits::kMaxDerivedSamples));
+  }
   fields.finish();
   return {name, description, plant, hysteresis, compensator.value_or(hysteresis), loop, scenarios};
 }
@@ -181,17 +190,7 @@ ActuatorConfig actuator_config_from_json(const nlohmann::json& document, std::st
 }
 
 ActuatorConfig load_actuator_config(const std::filesystem::path& path) {
-  const std::string text = io::read_file(path);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    std::string message = error.what();  // "[json.exception.parse_error.101] parse error at ..."
-    if (const auto tag_end = message.find("] "); tag_end != std::string::npos) {
-      message = message.substr(tag_end + 2);
-    }
-    throw Error(fmt::format("{}: not valid JSON: {}", path.string(), message));
-  }
+  const nlohmann::json document = io::parse_json_text(io::read_file(path), path.string());
   return actuator_config_from_json(document, path.string());
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/checks.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/plot/gnuplot.hpp"
 
 namespace hyst {
@@ -76,8 +77,15 @@ std::vector<control::Reference> scenario_references(const ActuatorConfig& config
 Comparison compare_strategies(const ActuatorConfig& config,
                               const std::vector<control::Reference>& references) {
   Comparison comparison{config.name, config.plant.sample_time, {}};
-  const auto lead_in =
-      static_cast<std::size_t>(std::llround(config.scenarios.lead_in / config.plant.sample_time));
+  // A count from two user-given numbers: checked as a double before it becomes an integer.
+  const double lead_in_samples = config.scenarios.lead_in / config.plant.sample_time;
+  if (!(lead_in_samples <= io::limits::kMaxDerivedSamples)) {
+    throw Error(fmt::format(
+        "scenarios.lead_in = {} s is {:.4g} samples of h = {} s, more than the limit of {:.0f}",
+        config.scenarios.lead_in, lead_in_samples, config.plant.sample_time,
+        io::limits::kMaxDerivedSamples));
+  }
+  const auto lead_in = static_cast<std::size_t>(std::llround(lead_in_samples));
   for (const auto& reference : references) {
     require_not_empty(reference.values.size(), "reference " + reference.name);
     std::vector<double> values(lead_in, reference.values.front());

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
 #include "hyst/data/branches.hpp"
+#include "hyst/io/limits.hpp"
 #include "record_checks.hpp"
 
 namespace hyst::data {
@@ -42,8 +45,23 @@ void append_branch(std::span<const double> position, std::span<const double> inp
   }
 }
 
+//! The intervals of a branch of `length`, after check_sample_count() bounded length / step.
 std::size_t interval_count(double length, double step) {
   return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / step - 1e-12)));
+}
+
+//! The samples the branches of `lengths` ask for at `step`, added up as doubles before any
+//! conversion to an integer (a step of 1e-17 would overflow it), against the stated limit.
+void check_sample_count(const std::vector<double>& lengths, double step, std::string_view what) {
+  double samples = 1.0;
+  for (const double length : lengths)
+    samples += std::max(1.0, std::ceil(length / step));
+  if (!(samples <= io::limits::kMaxDerivedSamples)) {
+    throw Error(fmt::format(
+        "{} {} asks for {:.4g} samples (branch length / step, over all branches), more than the "
+        "limit of {:.0f}; choose a larger step",
+        what, step, samples, io::limits::kMaxDerivedSamples));
+  }
 }
 
 }  // namespace
@@ -53,10 +71,15 @@ ResampledRecord resample_on_input_grid(std::span<const double> input,
                                        double input_step) {
   detail::require_record(input, output, 2);
   detail::require_positive(input_step, "input step");
+  const auto found = branches(input, band);
+  std::vector<double> lengths;
+  for (const auto& branch : found)
+    lengths.push_back(std::abs(input[branch.last] - input[branch.first]));
+  check_sample_count(lengths, input_step, "input step");
   ResampledRecord out;
   std::vector<double> position(input.size());
   bool first_branch = true;
-  for (const auto& branch : branches(input, band)) {
+  for (const auto& branch : found) {
     // Position along the branch: the input, sign-flipped on descending branches so that it
     // grows along every branch.
     const double sense = branch.direction == Direction::ascending ? 1.0 : -1.0;
@@ -84,10 +107,22 @@ ResampledRecord resample_by_arc_length(std::span<const double> input,
         "(input range {}, output range {})",
         x_range, y_range));
   }
+  const auto found = branches(input, band);
+  // Branches share their end points, so the lengths are added up before the positions are set.
+  std::vector<double> lengths;
+  for (const auto& branch : found) {
+    double length = 0.0;
+    for (std::size_t k = branch.first + 1; k <= branch.last; ++k) {
+      length +=
+          std::hypot((input[k] - input[k - 1]) / x_range, (output[k] - output[k - 1]) / y_range);
+    }
+    lengths.push_back(length);
+  }
+  check_sample_count(lengths, step, "arc length step");
   ResampledRecord out;
   std::vector<double> position(input.size());
   bool first_branch = true;
-  for (const auto& branch : branches(input, band)) {
+  for (const auto& branch : found) {
     position[branch.first] = 0.0;
     for (std::size_t k = branch.first + 1; k <= branch.last; ++k) {
       position[k] = position[k - 1] + std::hypot((input[k] - input[k - 1]) / x_range,

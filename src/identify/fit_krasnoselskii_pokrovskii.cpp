@@ -15,6 +15,9 @@ KpFit fit_krasnoselskii_pokrovskii(std::span<const double> input, std::span<cons
                                    const KpFitOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (options.levels == 0) throw Error("KP fit levels = 0 must be >= 1", "levels");
+  if (options.levels > 4096) {  // before N(N+1)/2, which overflows for huge N
+    throw Error(fmt::format("KP fit levels = {} must be in 1 .. 4096", options.levels), "levels");
+  }
   const std::size_t kernels = options.levels * (options.levels + 1) / 2;
   const auto parts =
       detail::split_record(input, output, options.validate_fraction, "KP fit", kernels + 1);

@@ -10,6 +10,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "text_encoding.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
@@ -271,6 +272,7 @@ bool looks_like_aixacct(std::string_view text) {
 }
 
 AixacctFile parse_aixacct(std::string_view text, std::string_view source_name) {
+  check_text_encoding(text, source_name);
   return Parser(text, source_name).run();
 }
 

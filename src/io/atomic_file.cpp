@@ -162,7 +162,19 @@ std::string read_file(const fs::path& path) {
   while (true) {
     const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get());
     const int error_number = errno;
-    content.append(buffer, count);
+    // A FIFO or device may never end: stop at the stated limit.
+    if (count > limits::kMaxInputBytes - content.size()) {
+      throw Error(fmt::format(
+          "cannot read '{}': it holds more than {} bytes, the limit of one input (an endless "
+          "stream?)",
+          path.string(), limits::kMaxInputBytes));
+    }
+    try {
+      content.append(buffer, count);
+    } catch (const std::bad_alloc&) {
+      throw Error(fmt::format("cannot read '{}': out of memory holding {} bytes", path.string(),
+                              content.size() + count));
+    }
     if (count == sizeof buffer) continue;
     if (std::ferror(file.get())) {
       throw Error(fmt::format("cannot read '{}': {}", path.string(), reason(error_number)));

@@ -15,6 +15,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "text_encoding.hpp"
 
 namespace hyst::io {
 namespace {
@@ -240,6 +241,7 @@ void Table::add_column(std::string name, std::vector<double> values) {
 
 Table parse_csv(std::string_view text, std::string_view source_name,
                 const CsvReadOptions& options) {
+  check_text_encoding(text, source_name);
   const std::string_view source = source_name;
   detail::LineReader reader(text);
   std::string_view line;

@@ -10,6 +10,7 @@
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/mat_file.hpp"
 #include "hyst/io/micromag_loop.hpp"
+#include "text_encoding.hpp"
 
 namespace hyst::io {
 namespace {
@@ -36,6 +37,7 @@ DataFile::DataFile(std::filesystem::path path, std::optional<std::size_t> table)
     names_ = list_mat_variables(path_);
   } else {
     const std::string text = read_file(path_);
+    check_text_encoding(text, path_.string());
     if (looks_like_aixacct(text)) {
       aixacct_ = parse_aixacct(text, path_.string());
       const auto& tables = aixacct_->measurements;

@@ -9,6 +9,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "text_encoding.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
@@ -41,6 +42,7 @@ std::optional<std::size_t> MagicTable::find(std::string_view column) const {
 }
 
 MagicTable parse_magic_table(std::string_view text, std::string_view source_name) {
+  check_text_encoding(text, source_name);
   MagicTable table;
   table.source = std::string(source_name);
   detail::LineReader lines(text);

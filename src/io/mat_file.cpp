@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <set>
 #include <system_error>
 
@@ -21,6 +22,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/output_paths.hpp"
+#include "hyst/io/limits.hpp"
 #include "mat_sizes.hpp"
 
 namespace hyst::io {
@@ -262,10 +264,19 @@ NumericVariable read_numeric(const fs::path& path, std::string_view variable, bo
   if (!matrix_allowed && info->rank == 2 && info->dims[0] > 1 && info->dims[1] > 1) {
     throw Error(fmt::format("{} is a {} matrix, expected a vector", prefix, dimensions(*info)));
   }
-  std::size_t count = 1;
+  // As a double first: the product of the dimensions may overflow std::size_t.
+  double claimed = 1.0;
   for (int d = 0; d < info->rank; ++d)
-    count *= info->dims[d];
-  if (info->class_type == MAT_C_EMPTY || count == 0) return {};
+    claimed *= static_cast<double>(info->dims[d]);
+  if (info->class_type == MAT_C_EMPTY || claimed == 0.0) return {};
+  if (claimed * sizeof(double) > static_cast<double>(limits::kMaxMatVariableBytes)) {
+    throw Error(
+        fmt::format("{} claims {} samples ({:.0f} bytes as doubles), more than the limit "
+                    "of {} bytes ({} samples) for one variable",
+                    prefix, dimensions(*info), claimed * sizeof(double),
+                    limits::kMaxMatVariableBytes, limits::kMaxMatVariableBytes / sizeof(double)));
+  }
+  const auto count = static_cast<std::size_t>(claimed);
   // matio allocates what the dimensions claim before it reads the data; a corrupt file may claim
   // billions of samples (found by fuzz/fuzz_mat_file). No file holds more samples than bytes,
   // times the best compression ratio of zlib (1032:1) - allow 2048.
@@ -274,9 +285,16 @@ NumericVariable read_numeric(const fs::path& path, std::string_view variable, bo
                             dimensions(*info), bytes));
   }
 
-  const VarHandle data(Mat_VarRead(mat.get(), name.c_str()));
-  if (!data || data->data == nullptr) throw Error(fmt::format("{} cannot be read", prefix));
-  std::vector<double> values(count);
+  VarHandle data;
+  std::vector<double> values;
+  try {
+    data.reset(Mat_VarRead(mat.get(), name.c_str()));
+    if (!data || data->data == nullptr) throw Error(fmt::format("{} cannot be read", prefix));
+    values.resize(count);
+  } catch (const std::bad_alloc&) {
+    throw Error(fmt::format("{}: out of memory reading {} samples ({} bytes)", prefix, count,
+                            count * sizeof(double)));
+  }
   if (!convert_numeric(*data, values)) {
     throw Error(fmt::format("{} has MATLAB class number {}, expected a real numeric vector", prefix,
                             static_cast<int>(data->class_type)));

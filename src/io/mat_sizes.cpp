@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/limits.hpp"
 
 namespace hyst::io::detail {
 namespace {
@@ -26,6 +27,9 @@ constexpr std::uint32_t kUint32 = 6;       // miUINT32: the array flags
 constexpr std::uint32_t kMatrix = 14;      // miMATRIX: sub-elements follow
 constexpr std::uint32_t kCompressed = 15;  // miCOMPRESSED: a zlib stream of one element
 constexpr int kMaxNesting = 32;            // cells of cells of ...: deeper is not a real file
+// A compressed element holds one variable: its data (at most limits::kMaxMatVariableBytes) and
+// headers (names, dimensions, the elements of cells and structs); 1 MiB is room for those.
+constexpr std::uint64_t kMaxInflatedElement = limits::kMaxMatVariableBytes + (1u << 20);
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
   throw Error(fmt::format("{}: not a valid MAT file: {}", path.string(), what));
@@ -122,6 +126,11 @@ class InflatedBytes {
       }
     }
     window_.insert(window_.end(), output, stream_.next_out);
+    if (window_begin_ + window_.size() > kMaxInflatedElement) {
+      fail(path_, fmt::format("the compressed element at byte {} inflates to more than {} bytes "
+                              "(the limit of one variable is {} bytes of data)",
+                              element_, kMaxInflatedElement, limits::kMaxMatVariableBytes));
+    }
     return true;
   }
 

@@ -10,6 +10,7 @@
 
 #include "hyst/core/error.hpp"
 #include "micromag_lines.hpp"
+#include "text_encoding.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
@@ -49,6 +50,7 @@ std::size_t MicromagForcFile::points() const {
 }
 
 MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view source_name) {
+  check_text_encoding(text, source_name);
   MicromagForcFile file;
   file.source = std::string(source_name);
   std::size_t line_number = 0;

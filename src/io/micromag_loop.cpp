@@ -10,6 +10,7 @@
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
 #include "micromag_lines.hpp"
+#include "text_encoding.hpp"
 #include "text_fields.hpp"
 
 namespace hyst::io {
@@ -311,6 +312,7 @@ bool looks_like_micromag_loop(std::string_view text) {
 }
 
 MicromagLoopFile parse_micromag_loop(std::string_view text, std::string_view source_name) {
+  check_text_encoding(text, source_name);
   return LoopParser(text, source_name).parse();
 }
 

@@ -13,6 +13,14 @@ namespace {
 
 void validate(const KrasnoselskiiPokrovskii::Params& p) {
   if (p.levels == 0) throw Error("KP levels N = 0 must be >= 1", "levels");
+  // Before N(N+1)/2 is computed: beyond 2^32 levels it would overflow (and could match a short
+  // weight list). 4096 levels are 8 390 656 kernels, as many as the Preisach model allows.
+  if (p.levels > 4096) {
+    throw Error(
+        fmt::format("KP levels N = {} must be in 1 .. 4096 (the model has N(N+1)/2 kernels)",
+                    p.levels),
+        "levels");
+  }
   if (!std::isfinite(p.lower)) {
     throw Error(fmt::format("KP lower = {} is not finite", p.lower), "lower");
   }

@@ -9,6 +9,7 @@
 #include "../detail/json_fields.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/json_text.hpp"
 
 namespace hyst {
 
@@ -51,46 +52,9 @@ nlohmann::json model_to_json(const DynamicModel& model, const nlohmann::json& in
   return document;
 }
 
-namespace {
-
-//! " at line L, column C" for nlohmann's "number overflow parsing '1e400'", which has no position:
-//! the first occurrence of the number in the text. Empty for other messages.
-std::string overflow_position(const std::string& message, std::string_view text) {
-  const std::string_view marker = "overflow parsing '";
-  const auto start = message.find(marker);
-  if (start == std::string::npos) return {};
-  const auto end = message.find('\'', start + marker.size());
-  if (end == std::string::npos) return {};
-  const auto number =
-      std::string_view(message).substr(start + marker.size(), end - start - marker.size());
-  const auto at = text.find(number);
-  if (number.empty() || at == std::string_view::npos) return {};
-  const auto before = text.substr(0, at);
-  const auto line = 1 + std::count(before.begin(), before.end(), '\n');
-  const auto line_start = before.rfind('\n');
-  const auto column = line_start == std::string_view::npos ? at + 1 : at - line_start;
-  return fmt::format(" at line {}, column {}", line, column);
-}
-
-}  // namespace
-
 std::unique_ptr<DynamicModel> load_model(const std::filesystem::path& path,
                                          const ModelRegistry& registry) {
-  const std::string text = io::read_file(path);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& error) {
-    // Syntax errors (parse_error) and numbers beyond double (out_of_range 406, "number overflow
-    // parsing '1e400'"). The library's message reads "[json.exception.parse_error.101] parse
-    // error at line 3, column 5: ..."; keep the part after the tag.
-    std::string message = error.what();
-    if (const auto tag_end = message.find("] "); tag_end != std::string::npos) {
-      message = message.substr(tag_end + 2);
-    }
-    throw Error(fmt::format("{}: not valid JSON: {}{}", path.string(), message,
-                            overflow_position(message, text)));
-  }
+  const nlohmann::json document = io::parse_json_text(io::read_file(path), path.string());
   return model_from_json(document, path.string(), registry);
 }
 

@@ -108,6 +108,78 @@ check wide.csv data "wide.csv:1: column 300001 ('c0') has the same name as colum
 head -c 150 "$BAD/mismatched_lengths.mat" >cut.mat
 check cut.mat data "cut.mat"
 
+# 2b. Limits (include/hyst/io/limits.hpp): JSON nesting through every JSON entry point (a model
+# file's "info" 100 000 levels deep used to overflow the stack of `hyst info`), duplicate keys,
+# an endless stream, a MAT variable inflating far beyond its file, resampling steps whose sample
+# count overflows an integer.
+"$PYTHON" - <<'PY' || exit 1
+import json
+good = json.load(open("good.json"))
+text = json.dumps(good)
+open("deep_info_100000.json", "w").write(
+    text[:-1] + ', "info": ' + '{"a": ' * 100000 + "1" + "}" * 100000 + "}")
+PY
+check_error deep_info_100000.json "deep_info_100000.json:1:" "$HYST" info deep_info_100000.json
+check_error deep_info_100000.json "JSON nesting deeper than 256 levels" "$HYST" info --json \
+  deep_info_100000.json
+awk 'BEGIN { print "v,y"; for (i = 0; i < 400; i++) print sin(i / 20) "," 0.8 * sin(i / 20) }' >sine.csv
+check_error options "--options:1:257: JSON nesting deeper than 256 levels" "$HYST" fit pi \
+  --data sine.csv --input v --output y --out fitted.json \
+  --options "$(printf '%0.s[' $(seq 300))"
+check_error options "--options:1:18: duplicate key 'operators'" "$HYST" fit pi --data sine.csv \
+  --input v --output y --out fitted.json --options '{"operators": 5, "operators": 6}'
+check_error option "--option 'pi.operators=" "$HYST" compare --data sine.csv --input v \
+  --output y --out-dir . --models pi --option "pi.operators=$(printf '%0.s[' $(seq 300))"
+CONFIG="$HERE/../../examples/config/msma_assumed.json"
+"$PYTHON" - "$CONFIG" <<'PY' || exit 1
+import sys
+text = open(sys.argv[1]).read()
+brace = text.index("{")
+open("config_duplicate.json", "w").write(text[:brace + 1] + '"x": 1, "x": 2, ' + text[brace + 1:])
+open("config_deep.json", "w").write(
+    text[:brace + 1] + '"x": ' + "[" * 1000 + "]" * 1000 + ", " + text[brace + 1:])
+open("config_lead_in.json", "w").write(text.replace('"lead_in": 0.05', '"lead_in": 1e300'))
+PY
+printf 't,r\n0,0\n0.001,0.1\n' >reference.csv
+check_error config_duplicate.json "config_duplicate.json:1:10: duplicate key 'x'" "$HYST" \
+  actuator simulate --config config_duplicate.json --reference reference.csv --out out.csv
+check_error config_deep.json "JSON nesting deeper than 256 levels" "$HYST" actuator simulate \
+  --config config_deep.json --reference reference.csv --out out.csv
+mkdir -p compare_out
+check_error config_lead_in.json "scenarios.lead_in = 1e+300 s is" "$HYST" actuator compare \
+  --config config_lead_in.json --out-dir compare_out --no-plots
+# An endless stream: a FIFO fed from /dev/zero stops at the 256 MiB input limit.
+mkfifo endless.csv
+timeout 20 sh -c 'cat /dev/zero >endless.csv' 2>/dev/null &
+check_error endless.csv "holds more than 268435456 bytes, the limit of one input" "$HYST" \
+  simulate --model good.json --input endless.csv --column v --out out.csv
+wait
+# A 0.77 MB v5 file whose compressed variable inflates to 800 MB (100 million zeros; made in
+# about 3 s).
+"$PYTHON" - <<'PY' || exit 1
+import struct, zlib
+n = 100_000_000
+body = (struct.pack("<II", 6, 8) + struct.pack("<II", 6, 0)           # array flags: double
+        + struct.pack("<II", 5, 8) + struct.pack("<ii", 1, n)          # dimensions 1 x n
+        + struct.pack("<HH", 1, 1) + b"v\0\0\0"                       # name 'v' (small element)
+        + struct.pack("<II", 9, 8 * n))                                # the doubles follow
+matrix = struct.pack("<II", 14, len(body) + 8 * n) + body
+packer = zlib.compressobj(9)
+compressed = packer.compress(matrix)
+zeros = bytes(1 << 23)
+for _ in range(8 * n // len(zeros)):
+    compressed += packer.compress(zeros)
+compressed += packer.flush()
+header = b"MATLAB 5.0 MAT-file, inflating".ljust(116, b" ") + bytes(8) + struct.pack("<H", 0x0100) + b"IM"
+open("inflating.mat", "wb").write(header + struct.pack("<II", 15, len(compressed)) + compressed)
+PY
+check_error inflating.mat "inflates to more than" "$HYST" simulate --model good.json \
+  --input inflating.mat --column v --out out.csv
+for step in input-grid:1e-6 input-grid:1e-17 arc-length:1e-300; do
+  check_error sine.csv "--resample $step): " "$HYST" fit pi --data sine.csv --input v \
+    --output y --out fitted.json --resample "$step"
+done
+
 # 3. Bad variants of every registered model's example file.
 models="$("$HYST" models --json | "$PYTHON" -c 'import json,sys; print(" ".join(m["name"] for m in json.load(sys.stdin)))')" ||
   exit 1

@@ -121,5 +121,18 @@ TEST(Resampling, RejectsInvalidSteps) {
   EXPECT_HYST_ERROR(resample_on_input_grid(r.input, r.output, 0.0, 1.0), "hysteresis band = 0");
 }
 
+// The sample count is bounded as a double before it becomes an integer: a step of 1e-17 used to
+// overflow the conversion (undefined behaviour), and 1e-6 asked for gigabytes.
+TEST(Resampling, RejectsStepsAskingForMoreSamplesThanTheLimit) {
+  const auto r = slow_record();  // two branches of length 10
+  EXPECT_HYST_ERROR(resample_on_input_grid(r.input, r.output, 0.5, 1e-17),
+                    "input step 1e-17 asks for 2e+18 samples");
+  EXPECT_HYST_ERROR(resample_on_input_grid(r.input, r.output, 0.5, 1e-6),
+                    "more than the limit of 10000000");
+  EXPECT_HYST_ERROR(resample_by_arc_length(r.input, r.output, 0.5, 1e-300),
+                    "arc length step 1e-300 asks for");
+  EXPECT_EQ(resample_on_input_grid(r.input, r.output, 0.5, 1e-5).input.size(), 2000001u);
+}
+
 }  // namespace
 }  // namespace hyst::data

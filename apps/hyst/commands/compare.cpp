@@ -18,6 +18,7 @@
 #include "hyst/identify/compare.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/output_set.hpp"
+#include "hyst/io/json_text.hpp"
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
@@ -67,6 +68,7 @@ std::map<std::string, nlohmann::json> fit_options(const std::vector<std::string>
     const auto model = pair.substr(0, dot);
     const auto key = pair.substr(dot + 1, equals - dot - 1);
     const auto text = pair.substr(equals + 1);
+    io::check_json_text(text, fmt::format("--option '{}'", pair));
     auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     auto& object = options[model];
     if (object.is_null()) object = nlohmann::json::object();

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/json_text.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -86,15 +87,7 @@ data::Preprocessing preprocessing(const FitOptions& options) {
 nlohmann::json fit_options(const FitOptions& options) {
   nlohmann::json json = nlohmann::json::object();
   if (!options.options_json.empty()) {
-    try {
-      json = nlohmann::json::parse(options.options_json);
-    } catch (const nlohmann::json::parse_error& error) {
-      std::string message = error.what();
-      if (const auto tag_end = message.find("] "); tag_end != std::string::npos) {
-        message = message.substr(tag_end + 2);
-      }
-      throw Error(fmt::format("--options: not valid JSON: {}", message));
-    }
+    json = io::parse_json_text(options.options_json, "--options");
     if (!json.is_object()) {
       throw Error(
           fmt::format("--options: expected a JSON object such as {{\"operators\": 12}}, "
@@ -109,6 +102,7 @@ nlohmann::json fit_options(const FitOptions& options) {
     }
     const auto key = pair.substr(0, equals);
     const auto text = pair.substr(equals + 1);
+    io::check_json_text(text, fmt::format("--option '{}'", pair));
     auto value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     json[key] = value.is_discarded() ? nlohmann::json(text) : value;
   }
@@ -196,7 +190,19 @@ void run(const FitOptions& options) {
   request.options = fit_json;
   request.preprocessing = prepare;
 
-  auto outcome = fit_model(entry, request);
+  // The fitters and the preprocessing know the samples, not where they came from (constant data,
+  // two samples, a resampling step asking for too many samples): name the data here.
+  auto outcome = [&] {
+    try {
+      return fit_model(entry, request);
+    } catch (const Error& error) {
+      throw Error(fmt::format("fitting '{}' to {} (input '{}', output '{}'{}): {}", entry.name,
+                              options.data, options.input, options.output,
+                              options.resample.empty() ? "" : ", --resample " + options.resample,
+                              error.what()),
+                  error.field());
+    }
+  }();
   const auto& report = outcome.report;
   if (report.termination == Termination::failed) {
     throw Error(

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/json_text.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -22,7 +23,7 @@ struct InfoOptions {
 void run(const InfoOptions& options) {
   const auto model = load_model(options.file);
   // The "info" object is not part of the model; load_model() checked it is an object if present.
-  const auto document = nlohmann::json::parse(io::read_file(options.file));
+  const auto document = io::parse_json_text(io::read_file(options.file), options.file);
   const auto info = document.contains("info") ? document.at("info") : nlohmann::json();
 
   if (options.json) {

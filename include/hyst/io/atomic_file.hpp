@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include "hyst/io/limits.hpp"
+
 namespace hyst::io {
 
 //! Replaces (or creates) the file at `path` with `content`, atomically. An existing file keeps its
@@ -25,7 +27,8 @@ namespace hyst::io {
 //! 'out/.fit.csv.tmp.4711.0')".
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
-//! The whole content of a file, byte for byte. Throws hyst::Error naming the path and the reason,
+//! The whole content of a file, byte for byte, at most limits::kMaxInputBytes (256 MiB; a longer
+//! file or an endless stream is an error). Throws hyst::Error naming the path and the reason,
 //! e.g. "cannot open 'x.csv': No such file or directory".
 std::string read_file(const std::filesystem::path& path);
 

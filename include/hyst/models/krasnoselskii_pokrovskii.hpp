@@ -39,7 +39,7 @@ namespace hyst {
 class KrasnoselskiiPokrovskii {
  public:
   struct Params {
-    std::size_t levels = 1;         //!< N cells / thresholds, >= 1
+    std::size_t levels = 1;         //!< N cells / thresholds, 1 .. 4096
     double lower = -1.0;            //!< [input units]
     double upper = 1.0;             //!< [input units], > lower
     std::vector<double> weights{};  //!< mu_ij >= 0, N(N+1)/2 of them, (i, j) at i(i+1)/2 + j

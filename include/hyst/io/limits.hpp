@@ -1,0 +1,30 @@
+#pragma once
+//! \file
+//! The limits hyst puts on what one input may cost. Every one of them is stated here, and every
+//! error that hits one names the limit and its value ("the limit is ..."). docs/reliability.md
+//! lists them too.
+
+#include <cstddef>
+
+namespace hyst::io::limits {
+
+//! Deepest nesting of arrays and objects in any JSON text hyst reads (model files, --options,
+//! actuator configurations, Python dicts and lists converted to JSON). Model files need 3 levels;
+//! the limit keeps every recursive walk over a document (printing, conversion) far from the end
+//! of the stack.
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
+//! Most bytes read from one input file (regular file, FIFO or device): 256 MiB. A longer input,
+//! such as an endless stream, stops at this limit with an error naming the file.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{1} << 28;
+
+//! Most bytes one MAT-file variable may hold once inflated (its samples as doubles): 256 MiB,
+//! i.e. 33 554 432 samples. Next to this, a variable may claim no more than 2048 x the file's
+//! size (zlib's best ratio is 1032:1).
+inline constexpr std::size_t kMaxMatVariableBytes = std::size_t{1} << 28;
+
+//! Most samples a count derived from a user-given number may ask for (resampling steps, grid
+//! sizes): 10 000 000. The count is checked as a double before it becomes an integer.
+inline constexpr double kMaxDerivedSamples = 1e7;
+
+}  // namespace hyst::io::limits

@@ -1,0 +1,61 @@
+#include "text_encoding.hpp"
+
+#include <fmt/format.h>
+
+#include "hyst/core/error.hpp"
+
+namespace hyst::io {
+namespace {
+
+struct Encoding {
+  const char* name;    // "UTF-16"
+  const char* endian;  // "little-endian"
+  bool bom;
+};
+
+//! The wide encoding the text starts in, or a null name.
+Encoding detect(std::string_view text) {
+  const auto byte = [&](std::size_t k) -> int {
+    return k < text.size() ? static_cast<unsigned char>(text[k]) : -1;
+  };
+  // Byte order marks; UTF-32LE's starts with UTF-16LE's, so it comes first.
+  if (byte(0) == 0xFF && byte(1) == 0xFE && byte(2) == 0 && byte(3) == 0) {
+    return {"UTF-32", "little-endian", true};
+  }
+  if (byte(0) == 0 && byte(1) == 0 && byte(2) == 0xFE && byte(3) == 0xFF) {
+    return {"UTF-32", "big-endian", true};
+  }
+  if (byte(0) == 0xFF && byte(1) == 0xFE) return {"UTF-16", "little-endian", true};
+  if (byte(0) == 0xFE && byte(1) == 0xFF) return {"UTF-16", "big-endian", true};
+  // No mark: ASCII characters leave NUL bytes in a fixed pattern.
+  const auto ascii = [](int b) { return b > 0 && b < 0x80; };
+  if (text.size() >= 4) {
+    if (ascii(byte(0)) && byte(1) == 0 && byte(2) == 0 && byte(3) == 0) {
+      return {"UTF-32", "little-endian", false};
+    }
+    if (byte(0) == 0 && byte(1) == 0 && byte(2) == 0 && ascii(byte(3))) {
+      return {"UTF-32", "big-endian", false};
+    }
+    if (ascii(byte(0)) && byte(1) == 0 && ascii(byte(2)) && byte(3) == 0) {
+      return {"UTF-16", "little-endian", false};
+    }
+    if (byte(0) == 0 && ascii(byte(1)) && byte(2) == 0 && ascii(byte(3))) {
+      return {"UTF-16", "big-endian", false};
+    }
+  }
+  return {nullptr, nullptr, false};
+}
+
+}  // namespace
+
+void check_text_encoding(std::string_view text, std::string_view source) {
+  const Encoding encoding = detect(text);
+  if (!encoding.name) return;
+  throw Error(fmt::format(
+      "{}: the file is {} ({}, {} byte order mark); hyst reads UTF-8 or ASCII text (convert it, "
+      "e.g. with iconv -f {} -t UTF-8)",
+      source, encoding.name, encoding.endian, encoding.bom ? "with a" : "without a",
+      encoding.name));
+}
+
+}  // namespace hyst::io
