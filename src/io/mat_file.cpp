@@ -21,8 +21,8 @@
 
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
-#include "hyst/io/output_paths.hpp"
 #include "hyst/io/limits.hpp"
+#include "hyst/io/output_paths.hpp"
 #include "mat_sizes.hpp"
 
 namespace hyst::io {

@@ -17,8 +17,8 @@
 #include "commands.hpp"
 #include "hyst/identify/compare.hpp"
 #include "hyst/io/atomic_file.hpp"
-#include "hyst/io/output_set.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/io/output_set.hpp"
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
