@@ -54,8 +54,9 @@ enum class JilesAthertonVariant { original, venkataraman };
 
 namespace detail {
 
-//! L(x), L'(x) and, when `second` is not null, L''(x) for a double x, from one expm1:
-//! coth|x| = (2 + e) / (-e) and 1 / sinh^2 x = 4 (1 + e) / e^2 with e = expm1(-2 |x|). Series near
+//! L(x), L'(x) and, when `second` is not null, L''(x) for a double x, from one exponential:
+//! coth|x| = (1 + E) / (1 - E) and 1 / sinh^2 x = 4 E / (1 - E)^2 with E = exp(-2 |x|) (written
+//! with e = expm1(-2 |x|) = E - 1 for |x| < 0.35, where 1 - E would cancel). Series near
 //! 0 (L for |x| < 1e-3, L' for |x| < 1e-2, L'' for |x| < 0.1, where the closed forms cancel), the
 //! limits beyond |x| = 40 (coth x = +-1 to 1e-34; sinh would overflow beyond 710).
 inline void langevin_values(double x, double& value, double& derivative, double* second = nullptr) {
@@ -70,7 +71,12 @@ inline void langevin_values(double x, double& value, double& derivative, double*
   }
   double coth = 0.0;
   double csch2 = 0.0;
-  if (ax >= 1e-3) {
+  if (ax >= 0.35) {  // exp(-2 |x|) <= 0.5: 1 - exp(-2 |x|) does not cancel
+    const double e = std::exp(-2.0 * ax);
+    const double inv = 1.0 / (1.0 - e);
+    coth = std::copysign((1.0 + e) * inv, x);
+    csch2 = 4.0 * e * inv * inv;
+  } else if (ax >= 1e-3) {
     const double e = std::expm1(-2.0 * ax);
     coth = std::copysign((2.0 + e) / (-e), x);
     csch2 = 4.0 * (1.0 + e) / (e * e);
@@ -98,7 +104,7 @@ template <class T>
 inline constexpr bool is_plain_scalar = std::is_floating_point_v<T>;
 
 //! L(x) and L'(x) for double or for a ceres::Jet-like type (members a, v): for a Jet the values are
-//! those of the double and the derivative parts follow from L' and L'' (one expm1 in all).
+//! those of the double and the derivative parts follow from L' and L'' (one exponential in all).
 template <class T>
 inline void langevin_pair(const T& x, T& value, T& derivative) {
   if constexpr (is_plain_scalar<T>) {
