@@ -20,8 +20,122 @@ using Vector = std::array<double, kParameters>;
 double value_of(double x) {
   return x;
 }
-template <class T, int N>
-double value_of(const ceres::Jet<T, N>& x) {
+// Forward-mode derivatives for the simulation inside the fit: a value and its N partial
+// derivatives in a plain array, with only the operations the Jiles-Atherton integration uses, so
+// that the compiler inlines them (ceres::Jet's Eigen vectors of length 5 are not). The value part
+// is computed by the same double operations as the double simulation.
+template <int N>
+struct Partials {
+  std::array<double, static_cast<std::size_t>(N)> d{};
+  double& operator[](std::size_t i) { return d[i]; }
+  double operator[](std::size_t i) const { return d[i]; }
+  double& operator[](int i) { return d[static_cast<std::size_t>(i)]; }
+  double operator[](int i) const { return d[static_cast<std::size_t>(i)]; }
+};
+
+template <int N>
+[[gnu::always_inline]] inline Partials<N> operator*(double s, const Partials<N>& x) {
+  Partials<N> r;
+  for (int i = 0; i < N; ++i)
+    r[i] = s * x[i];
+  return r;
+}
+
+template <int N>
+struct Dual {
+  using Derivatives = Partials<N>;
+  double a = 0.0;
+  Derivatives v{};
+  Dual() = default;
+  explicit Dual(double value) : a(value) {}
+  Dual(double value, const Derivatives& derivatives) : a(value), v(derivatives) {}
+  [[gnu::always_inline]] Dual& operator+=(const Dual& y) {
+    a += y.a;
+    for (int i = 0; i < N; ++i)
+      v[i] += y.v[i];
+    return *this;
+  }
+  [[gnu::always_inline]] Dual& operator-=(const Dual& y) {
+    a -= y.a;
+    for (int i = 0; i < N; ++i)
+      v[i] -= y.v[i];
+    return *this;
+  }
+};
+
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator+(const Dual<N>& x, const Dual<N>& y) {
+  Dual<N> r = x;
+  return r += y;
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator-(const Dual<N>& x, const Dual<N>& y) {
+  Dual<N> r = x;
+  return r -= y;
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator+(double s, const Dual<N>& x) {
+  return {s + x.a, x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator-(double s, const Dual<N>& x) {
+  return {s - x.a, -1.0 * x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator-(const Dual<N>& x, double s) {
+  return {x.a - s, x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator*(const Dual<N>& x, const Dual<N>& y) {
+  Dual<N> r(x.a * y.a);
+  for (int i = 0; i < N; ++i)
+    r.v[i] = x.a * y.v[i] + y.a * x.v[i];
+  return r;
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator*(double s, const Dual<N>& x) {
+  return {s * x.a, s * x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator*(const Dual<N>& x, double s) {
+  return {x.a * s, s * x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator/(const Dual<N>& x, const Dual<N>& y) {
+  const double inv = 1.0 / y.a;
+  Dual<N> r(x.a / y.a);
+  for (int i = 0; i < N; ++i)
+    r.v[i] = (x.v[i] - r.a * y.v[i]) * inv;
+  return r;
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator/(double s, const Dual<N>& y) {
+  const double inv = 1.0 / y.a;
+  Dual<N> r(s / y.a);
+  for (int i = 0; i < N; ++i)
+    r.v[i] = -r.a * y.v[i] * inv;
+  return r;
+}
+template <int N>
+[[gnu::always_inline]] inline Dual<N> operator/(const Dual<N>& x, double s) {
+  const double inv = 1.0 / s;
+  return {x.a / s, inv * x.v};
+}
+template <int N>
+[[gnu::always_inline]] inline bool operator<(const Dual<N>& x, double s) {
+  return x.a < s;
+}
+template <int N>
+[[gnu::always_inline]] inline bool operator>(const Dual<N>& x, double s) {
+  return x.a > s;
+}
+template <int N>
+[[gnu::always_inline]] inline bool operator<(const Dual<N>& x, const Dual<N>& y) {
+  return x.a < y.a;
+}
+
+template <int N>
+double value_of(const Dual<N>& x) {
   return x.a;
 }
 
@@ -69,10 +183,36 @@ class LoopError {
   }
   std::size_t residuals() const { return residuals_; }
 
-  template <class T>
-  bool operator()(const T* q, T* residuals) const {
-    const detail::JilesAthertonCoefficients<T> p{
+  bool operator()(const double* q, double* residuals) const {
+    const detail::JilesAthertonCoefficients<double> p{
         q[0] * scale_[0], q[1] * scale_[1], q[2] * scale_[2], q[3] * scale_[3], q[4] * scale_[4]};
+    return evaluate(p, residuals);
+  }
+
+  // Jacobian: the simulation runs in Dual numbers and is copied into Ceres' Jets.
+  template <int N>
+  bool operator()(const ceres::Jet<double, N>* q, ceres::Jet<double, N>* residuals) const {
+    static_assert(N == static_cast<int>(kParameters));
+    std::array<Dual<N>, kParameters> x;
+    for (std::size_t i = 0; i < kParameters; ++i) {
+      x[i].a = q[i].a * scale_[i];
+      for (int j = 0; j < N; ++j)
+        x[i].v[static_cast<std::size_t>(j)] = q[i].v[j] * scale_[i];
+    }
+    const detail::JilesAthertonCoefficients<Dual<N>> p{x[0], x[1], x[2], x[3], x[4]};
+    std::vector<Dual<N>> out(residuals_);
+    if (!evaluate(p, out.data())) return false;
+    for (std::size_t r = 0; r < residuals_; ++r) {
+      residuals[r].a = out[r].a;
+      for (int j = 0; j < N; ++j)
+        residuals[r].v[j] = out[r].v[static_cast<std::size_t>(j)];
+    }
+    return true;
+  }
+
+ private:
+  template <class T>
+  bool evaluate(const detail::JilesAthertonCoefficients<T>& p, T* residuals) const {
     if (!(p.ms > 0.0 && p.a > 0.0 && p.k > 0.0)) return false;
     if (!(p.alpha * p.ms / (3.0 * p.a) < 0.99)) return false;
     // dM/dH ~ 1/k: the RK4 step must stay well below k, or the integration turns unstable.

@@ -41,6 +41,7 @@
 #include <cstddef>
 #include <numbers>
 #include <string_view>
+#include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/runge_kutta.hpp"
@@ -53,35 +54,105 @@ enum class JilesAthertonVariant { original, venkataraman };
 
 namespace detail {
 
-template <class T>
-inline T langevin(const T& x) {
-  using std::abs;
-  using std::tanh;
-  if (abs(x) < 1e-3) {
-    const T x2 = x * x;
-    return x * (1.0 / 3.0 - x2 * (1.0 / 45.0 - x2 * (2.0 / 945.0)));
+//! L(x), L'(x) and, when `second` is not null, L''(x) for a double x, from one exponential:
+//! coth|x| = (1 + E) / (1 - E) and 1 / sinh^2 x = 4 E / (1 - E)^2 with E = exp(-2 |x|) (written
+//! with e = expm1(-2 |x|) = E - 1 for |x| < 0.35, where 1 - E would cancel). Series near
+//! 0 (L for |x| < 1e-3, L' for |x| < 1e-2, L'' for |x| < 0.1, where the closed forms cancel), the
+//! limits beyond |x| = 40 (coth x = +-1 to 1e-34; sinh would overflow beyond 710).
+inline void langevin_values(double x, double& value, double& derivative, double* second = nullptr) {
+  const double ax = std::abs(x);
+  const double x2 = x * x;
+  if (ax > 40.0) {
+    const double inv = 1.0 / x;
+    value = (x > 0.0 ? 1.0 : -1.0) - inv;
+    derivative = inv * inv;
+    if (second) *second = -2.0 * inv * inv * inv;
+    return;
   }
-  if (abs(x) > 40.0) return (x > 0.0 ? 1.0 : -1.0) - 1.0 / x;  // coth x = +-1 to 1e-34
-  return 1.0 / tanh(x) - 1.0 / x;
+  double coth = 0.0;
+  double csch2 = 0.0;
+  if (ax >= 0.35) {  // exp(-2 |x|) <= 0.5: 1 - exp(-2 |x|) does not cancel
+    const double e = std::exp(-2.0 * ax);
+    const double inv = 1.0 / (1.0 - e);
+    coth = std::copysign((1.0 + e) * inv, x);
+    csch2 = 4.0 * e * inv * inv;
+  } else if (ax >= 1e-3) {
+    const double e = std::expm1(-2.0 * ax);
+    coth = std::copysign((2.0 + e) / (-e), x);
+    csch2 = 4.0 * (1.0 + e) / (e * e);
+  }
+  if (ax < 1e-3) {
+    value = x * (1.0 / 3.0 - x2 * (1.0 / 45.0 - x2 * (2.0 / 945.0)));
+  } else {
+    value = coth - 1.0 / x;
+  }
+  if (ax < 1e-2) {
+    derivative = 1.0 / 3.0 - x2 * (1.0 / 15.0 - x2 * (2.0 / 189.0));
+  } else {
+    derivative = 1.0 / x2 - csch2;
+  }
+  if (!second) return;
+  if (ax < 0.1) {
+    *second =
+        x * (-2.0 / 15.0 + x2 * (8.0 / 189.0 - x2 * (42.0 / 4725.0 - x2 * (144.0 / 93555.0))));
+  } else {
+    *second = -2.0 / (x2 * x) + 2.0 * coth * csch2;
+  }
 }
 
 template <class T>
-inline T langevin_derivative(const T& x) {
-  using std::abs;
-  using std::sinh;
-  if (abs(x) < 1e-2) {
-    const T x2 = x * x;
-    return 1.0 / 3.0 - x2 * (1.0 / 15.0 - x2 * (2.0 / 189.0));
+inline constexpr bool is_plain_scalar = std::is_floating_point_v<T>;
+
+//! L(x) and L'(x) for double or for a ceres::Jet-like type (members a, v): for a Jet the values are
+//! those of the double and the derivative parts follow from L' and L'' (one exponential in all).
+template <class T>
+inline void langevin_pair(const T& x, T& value, T& derivative) {
+  if constexpr (is_plain_scalar<T>) {
+    langevin_values(x, value, derivative);
+  } else {
+    double l = 0.0;
+    double dl = 0.0;
+    double d2l = 0.0;
+    langevin_values(x.a, l, dl, &d2l);
+    value.a = l;
+    value.v = dl * x.v;
+    derivative.a = dl;
+    derivative.v = d2l * x.v;
   }
-  if (abs(x) > 40.0) return 1.0 / (x * x);  // 1/sinh^2 < 1e-34; sinh overflows beyond 710
-  const T s = sinh(x);
-  return 1.0 / (x * x) - 1.0 / (s * s);
+}
+
+//! Langevin function L(x) = coth x - 1/x (langevin_values()).
+template <class T>
+inline T langevin(const T& x) {
+  T value(0.0);
+  T derivative(0.0);
+  langevin_pair(x, value, derivative);
+  return value;
+}
+
+//! L'(x) = 1/x^2 - 1/sinh^2 x (langevin_values()).
+template <class T>
+inline T langevin_derivative(const T& x) {
+  T value(0.0);
+  T derivative(0.0);
+  langevin_pair(x, value, derivative);
+  return derivative;
 }
 
 template <class T>
 struct JilesAthertonCoefficients {
   T ms, a, k, c, alpha;
 };
+
+//! The value of a double or of a ceres::Jet-like type (member a).
+template <class T>
+inline double value_part(const T& x) {
+  if constexpr (is_plain_scalar<T>) {
+    return x;
+  } else {
+    return x.a;
+  }
+}
 
 //! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k.
 template <class T>
@@ -94,15 +165,28 @@ inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
 //! Total M for the original variant: the root of M - c M_an(H + alpha M) - (1 - c) M_irr, by
 //! Newton's method from `m` (the slope 1 - c alpha dM_an/dH_e >= 1 - alpha M_s / (3 a) > 0).
 template <class T>
-inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, double h, const T& m_irr,
-                                T m) {
+inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, const T& inv_a, double h,
+                                const T& m_irr, T m) {
+  const T c_ms = p.c * p.ms;
+  const T slope_scale = c_ms * p.alpha * inv_a;
+  const T m_rest = (1.0 - p.c) * m_irr;
   for (int i = 0; i < 4; ++i) {
-    const T xe = (h + p.alpha * m) / p.a;
-    const T residual = m - p.c * p.ms * langevin(xe) - (1.0 - p.c) * m_irr;
-    const T slope = 1.0 - p.c * p.alpha * p.ms / p.a * langevin_derivative(xe);
-    m -= residual / slope;
+    const T xe = (h + p.alpha * m) * inv_a;
+    T l(0.0);
+    T dl(0.0);
+    langevin_pair(xe, l, dl);
+    const T update = (m - c_ms * l - m_rest) / (1.0 - slope_scale * dl);
+    m -= update;
+    // Quadratic convergence: the next update would be below 1e-24 M_s.
+    if (std::abs(value_part(update)) <= 1e-12 * value_part(p.ms)) break;
   }
   return m;
+}
+
+template <class T>
+inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, double h, const T& m_irr,
+                                T m) {
+  return ja_total_magnetisation(p, T(1.0 / p.a), h, m_irr, m);
 }
 
 //! Advances (M, M_irr) from field h0 by dh with `steps` RK4 steps, or adaptively with error
@@ -112,26 +196,30 @@ inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVaria
                        double h0, double dh, std::size_t steps, T& m, T& m_irr,
                        double tolerance = 0.0) {
   const double delta = dh > 0.0 ? 1.0 : -1.0;
+  const T inv_a = 1.0 / p.a;
   if (variant == JilesAthertonVariant::original) {
     const T m_guess = m;
     auto rhs = [&](const std::array<T, 1>& s, double tau) {
       const double h = h0 + tau * dh;
-      const T mt = ja_total_magnetisation(p, h, s[0], m_guess);
-      const T diff = p.ms * langevin((h + p.alpha * mt) / p.a) - s[0];
+      const T mt = ja_total_magnetisation(p, inv_a, h, s[0], m_guess);
+      const T diff = p.ms * langevin((h + p.alpha * mt) * inv_a) - s[0];
       if (!(delta * diff > 0.0)) return std::array<T, 1>{T(0.0)};
       return std::array<T, 1>{diff / ja_denominator(p.k, p.alpha, diff, delta)};
     };
     std::array<T, 1> x{m_irr};
     integrate_sample(x, T(dh), steps, tolerance, rhs);
     m_irr = x[0];
-    m = ja_total_magnetisation(p, h0 + dh, m_irr, m_guess);
+    m = ja_total_magnetisation(p, inv_a, h0 + dh, m_irr, m_guess);
   } else {
+    const T c_delta_k_chi = p.c * delta * p.k * p.ms * inv_a;  // c delta k dM_an/dH_e / L'
     auto rhs = [&](const std::array<T, 1>& s, double tau) {
       const double h = h0 + tau * dh;
-      const T xe = (h + p.alpha * s[0]) / p.a;
-      const T diff = p.ms * langevin(xe) - s[0];
-      const T chi_an = p.ms / p.a * langevin_derivative(xe);
-      T n = p.c * delta * p.k * chi_an;
+      const T xe = (h + p.alpha * s[0]) * inv_a;
+      T l(0.0);
+      T dl(0.0);
+      langevin_pair(xe, l, dl);
+      const T diff = p.ms * l - s[0];
+      T n = c_delta_k_chi * dl;
       if (delta * diff > 0.0) n += diff;
       T slope = n / ja_denominator(p.k, p.alpha, n, delta);
       if (slope < 0.0) slope = T(0.0);
