@@ -15,21 +15,7 @@
 # Exit status 0 = pass, 1 = fail, 77 = skipped.
 
 set -u
-: "${HYST:?set HYST to the hyst executable}"
-HYST="$(cd "$(dirname "$HYST")" && pwd)/$(basename "$HYST")"
-WORK="$(mktemp -d "${TMPDIR:-/tmp}/hyst-atomic.XXXXXX")"
-trap 'chmod -R u+w "$WORK" 2>/dev/null; rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-good_model() {
-  "$HYST" models pi --json |
-    /usr/bin/python3 -c 'import json,sys; json.dump(json.load(sys.stdin)["example"], sys.stdout)' >"$1"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/test_support.sh" atomic
 
 # input_csv FILE N: a column v of N samples of a slow sine.
 input_csv() {

@@ -16,28 +16,14 @@
 # Exit status 0 = pass, 1 = fail, 77 = skipped.
 
 set -u
-: "${HYST:?set HYST to the hyst executable}"
-HYST="$(cd "$(dirname "$HYST")" && pwd)/$(basename "$HYST")"
-WORK="$(mktemp -d "${TMPDIR:-/tmp}/hyst-set.XXXXXX")"
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/test_support.sh" set
 mkdir tmp
 # Temporary files of hyst (and gnuplot) would land here; the marker finds our gnuplot processes.
 export TMPDIR="$WORK/tmp" HYST_SET_TEST_MARK="$WORK"
 
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
 command -v gnuplot >/dev/null || {
   echo "SKIP: gnuplot is not installed"
   exit 77
-}
-
-good_model() {
-  "$HYST" models pi --json |
-    /usr/bin/python3 -c 'import json,sys; json.dump(json.load(sys.stdin)["example"], sys.stdout)' >"$1"
 }
 
 # record FILE AMPLITUDE: v (a sine growing to AMPLITUDE) and y, the PI model's output.

@@ -144,16 +144,6 @@ struct JilesAthertonCoefficients {
   T ms, a, k, c, alpha;
 };
 
-//! The value of a double or of a ceres::Jet-like type (member a).
-template <class T>
-inline double value_part(const T& x) {
-  if constexpr (is_plain_scalar<T>) {
-    return x;
-  } else {
-    return x.a;
-  }
-}
-
 //! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k.
 template <class T>
 inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
@@ -177,8 +167,6 @@ inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, const T& 
     langevin_pair(xe, l, dl);
     const T update = (m - c_ms * l - m_rest) / (1.0 - slope_scale * dl);
     m -= update;
-    // Quadratic convergence: the next update would be below 1e-24 M_s.
-    if (std::abs(value_part(update)) <= 1e-12 * value_part(p.ms)) break;
   }
   return m;
 }
