@@ -14,10 +14,10 @@
 //!
 //! Method: Levenberg-Marquardt (Ceres, dense QR) with automatic derivatives through the RK4
 //! integration (forward mode: the simulation runs in inlined dual numbers, copied into Ceres' Jets;
-//! the values are those of the double simulation), parameters scaled by the first start. Starts (from the data):
-//! M_s = 1.1 max(B/mu0 - H); k = the coercive field H_c (where B crosses 0); a in {H_c, 3 H_c};
-//! c in {0.2, 0.8}; alpha = 0 and alpha = a / M_s. Candidate steps with alpha M_s / (3 a) >= 0.99
-//! are rejected. report.termination is Ceres' own verdict.
+//! the values are those of the double simulation), parameters scaled by the first start. Starts
+//! (from the data): M_s = 1.1 max(B/mu0 - H); k = the coercive field H_c (where B crosses 0); a in
+//! {H_c, 3 H_c}; c in {0.2, 0.8}; alpha = 0 and alpha = a / M_s. Candidate steps with alpha M_s /
+//! (3 a) >= 0.99 are rejected. report.termination is Ceres' own verdict.
 
 #include <cstddef>
 #include <span>
