@@ -1,5 +1,8 @@
 #include "text_encoding.hpp"
 
+#include <algorithm>
+#include <cstddef>
+
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
@@ -50,7 +53,19 @@ Encoding detect(std::string_view text) {
 
 void check_text_encoding(std::string_view text, std::string_view source) {
   const Encoding encoding = detect(text);
-  if (!encoding.name) return;
+  if (!encoding.name) {
+    // Text never holds a NUL; refusing it here keeps every reader's verdict independent of where
+    // in the file the NUL bytes happen to stand (the patterns above look at the start only).
+    const auto nul = text.find('\0');
+    if (nul == std::string_view::npos) return;
+    const auto before = text.substr(0, nul);
+    const auto line = 1 + std::count(before.begin(), before.end(), '\n');
+    const auto line_start = before.rfind('\n');
+    const auto column = line_start == std::string_view::npos ? nul + 1 : nul - line_start;
+    throw Error(fmt::format(
+        "{}:{}:{}: a NUL byte, which UTF-8 or ASCII text does not contain (a binary file?)", source,
+        line, column));
+  }
   throw Error(fmt::format(
       "{}: the file is {} ({}, {} byte order mark); hyst reads UTF-8 or ASCII text (convert it, "
       "e.g. with iconv -f {} -t UTF-8)",

@@ -8,7 +8,8 @@ namespace hyst::io {
 //! Throws hyst::Error "SOURCE: the file is UTF-16 (little-endian, with a byte order mark); hyst
 //! reads UTF-8 or ASCII text (convert it, e.g. with iconv -f UTF-16 -t UTF-8)" when the text
 //! starts with a UTF-16 or UTF-32 byte order mark, or, without one, when its first bytes show the
-//! NUL pattern of ASCII characters in UTF-16 or UTF-32. Returns for any other text.
+//! NUL pattern of ASCII characters in UTF-16 or UTF-32. Any other text holding a NUL byte is
+//! refused too ("SOURCE:LINE:COLUMN: a NUL byte, ..."); returns for all other text.
 void check_text_encoding(std::string_view text, std::string_view source);
 
 }  // namespace hyst::io
