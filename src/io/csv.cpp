@@ -125,6 +125,11 @@ std::string name_problem(std::string_view name) {
   if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
   // Written first in a file, it would be read as the file's byte order mark and dropped.
   if (name.starts_with(detail::kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
+  // Written first, they would make the file read as UTF-16 (text_encoding.hpp); neither byte
+  // occurs in UTF-8.
+  if (name.starts_with("\xFE\xFF") || name.starts_with("\xFF\xFE")) {
+    return "starts with the bytes of a UTF-16 byte order mark (FE FF or FF FE)";
+  }
   return {};
 }
 

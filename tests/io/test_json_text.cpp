@@ -106,6 +106,11 @@ TEST(TextEncoding, Utf16AndUtf32AreNamed) {
   // with the UTF-32 pattern at its start) is refused wherever it stands.
   EXPECT_EQ(csv_error("v\n1\n2\0\n"s),
             "w.csv:3:2: a NUL byte, which UTF-8 or ASCII text does not contain (a binary file?)");
+  // A name starting with a UTF-16 byte order mark after a comment line: written back first in a
+  // file, it would read as UTF-16 (found by fuzzing).
+  EXPECT_EQ(csv_error("# c\n\xFE\xFFv,y\n1,2\n"s),
+            "w.csv:2: column 1 of the header: the name starts with the bytes of a UTF-16 byte "
+            "order mark (FE FF or FF FE)");
   // UTF-8 with its byte order mark is read.
   EXPECT_EQ(parse_csv("\xEF\xBB\xBFv\n1\n", "u.csv").names.at(0), "v");
 }
