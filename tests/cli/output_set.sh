@@ -161,13 +161,16 @@ kill_runs() {
     eval "exec $cmd" >/dev/null 2>&1 &
     local pid=$!
     if [ "$step" = gnuplot ]; then
+      # Killed as soon as a gnuplot child is seen (a second look could miss a short plot).
       local waited=0
-      while kill -0 "$pid" 2>/dev/null && ! pgrep -x -P "$pid" gnuplot >/dev/null &&
-        [ "$waited" -lt 4000 ]; do
+      while kill -0 "$pid" 2>/dev/null && [ "$waited" -lt 4000 ]; do
+        if pgrep -x -P "$pid" gnuplot >/dev/null; then
+          gnuplot_kills=$((gnuplot_kills + 1))
+          break
+        fi
         sleep 0.002
         waited=$((waited + 2))
       done
-      pgrep -x -P "$pid" gnuplot >/dev/null && gnuplot_kills=$((gnuplot_kills + 1))
     else
       sleep "$(awk -v w="$whole" -v k="$step" 'BEGIN { printf "%.3f", w * k / 10000 }')"
     fi
