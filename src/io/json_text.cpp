@@ -71,6 +71,9 @@ std::string overflow_position(const std::string& message, std::string_view text)
 }  // namespace
 
 void check_json_text(std::string_view text, std::string_view source) {
+  // nlohmann's parser takes a NUL byte for the end of the input and ignores what follows it;
+  // the encoding check refuses one wherever it stands.
+  check_text_encoding(text, source);
   std::vector<Frame> stack;
   Position at;
   std::string pending_key;  // the last key read, names the value that follows it
@@ -83,18 +86,8 @@ void check_json_text(std::string_view text, std::string_view source) {
       ++at.column;
     }
   };
-  // nlohmann's parser takes a NUL byte for the end of the input and ignores what follows it;
-  // JSON text never holds one (not even in a string), so it is refused where it stands.
-  const auto refuse_nul = [&](char c) {
-    if (c != '\0') return;
-    throw Error(
-        fmt::format("{}:{}:{}: a NUL byte, which JSON text does not contain (a binary "
-                    "file?)",
-                    source, at.line, at.column));
-  };
   while (i < text.size()) {
     const char c = text[i];
-    refuse_nul(c);
     if (c == '"') {
       const Position start = at;
       const std::size_t begin = i;
@@ -103,11 +96,9 @@ void check_json_text(std::string_view text, std::string_view source) {
       bool closed = false;
       while (i < text.size()) {
         const char d = text[i];
-        refuse_nul(d);
         advance(d);
         ++i;
         if (d == '\\' && i < text.size()) {
-          refuse_nul(text[i]);
           advance(text[i]);
           ++i;
         } else if (d == '"') {
@@ -159,7 +150,6 @@ void check_json_text(std::string_view text, std::string_view source) {
 }
 
 nlohmann::json parse_json_text(std::string_view text, std::string_view source) {
-  check_text_encoding(text, source);
   check_json_text(text, source);
   try {
     return nlohmann::json::parse(text);

@@ -10,8 +10,9 @@
 namespace hyst::io {
 
 //! Checks the structure of `text` without building a document: nesting no deeper than
-//! limits::kMaxJsonDepth, no key twice in one object, no NUL byte (nlohmann's parser would take
-//! it for the end of the text and ignore the rest). Throws hyst::Error
+//! limits::kMaxJsonDepth, no key twice in one object, UTF-8 or ASCII text without a NUL byte
+//! (check_text_encoding(); nlohmann's parser would take a NUL for the end of the text and ignore
+//! the rest). Throws hyst::Error
 //! "SOURCE:LINE:COLUMN: ..." at the first violation, e.g. "m.json:3:14: duplicate key 'weights'
 //! in 'params' (first at line 2, column 14)" or "m.json:1:257: JSON nesting deeper than 256
 //! levels (the limit)". Does not judge the syntax otherwise (parse_json_text() does).
