@@ -1,6 +1,7 @@
 // The command line of the hyst library (see main.cpp): the application with its subcommands,
 // parsing, and the translation of every failure into one error line and an exit status.
 
+#include <atomic>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -19,6 +20,16 @@
 
 namespace hyst::cli {
 namespace {
+
+std::atomic<std::size_t> failed_allocation_bytes{0};
+
+//! "an allocation of 3.2 GB (3200000000 bytes) failed", or nothing when the size is unknown.
+std::string failed_allocation_text() {
+  const std::size_t bytes = failed_allocation_bytes.load();
+  if (bytes == 0) return "";
+  return fmt::format(": an allocation of {:.3g} GB ({} bytes) failed",
+                     static_cast<double>(bytes) / 1e9, bytes);
+}
 
 void print_error(std::string_view message) {
   std::fflush(stdout);
@@ -92,6 +103,10 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
 
 }  // namespace
 
+void note_failed_allocation(std::size_t bytes) noexcept {
+  failed_allocation_bytes.store(bytes);
+}
+
 int run_cli(int argc, const char* const* argv) {
   try {
     return parse_and_run(argc, argv);
@@ -103,7 +118,8 @@ int run_cli(int argc, const char* const* argv) {
     for (int k = 1; k < argc; ++k)
       command += fmt::format("{}{}", k > 1 ? " " : "", argv[k]);
     if (command.size() > 200) command = command.substr(0, 200) + "...";
-    print_error(fmt::format("out of memory running 'hyst {}'", command));
+    print_error(
+        fmt::format("out of memory running 'hyst {}'{}", command, failed_allocation_text()));
   } catch (const std::exception& error) {
     print_error(fmt::format("unexpected failure: {}", error.what()));
   } catch (...) {

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -18,6 +21,18 @@ std::string with_point(std::string text) {
   });
   if (!has_point) text += ".0";
   return text;
+}
+
+// FNV-1a, 64 bits: a stable digest of the exported text (identical exports, identical stamp).
+std::uint64_t text_digest(std::initializer_list<std::string_view> parts) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (const std::string_view part : parts) {
+    for (const char c : part) {
+      hash ^= static_cast<unsigned char>(c);
+      hash *= 0x100000001b3ULL;
+    }
+  }
+  return hash;
 }
 
 bool is_identifier_char(char c) {
@@ -172,10 +187,10 @@ void @_inverse_reset(@_inverse_state *state);
 
 CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
                        std::string_view source_file) {
-  std::string guard;
+  std::string guard_base;
   for (const char c : writer.prefix())
-    guard += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  guard += "_H_INCLUDED";
+    guard_base += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string guard = guard_base + "_H_INCLUDED";
   const std::string origin =
       source_file.empty() ? std::string("a model object") : fmt::format("'{}'", source_file);
   const std::string preamble = fmt::format(
@@ -197,14 +212,25 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   files.header_name = writer.prefix() + ".h";
   files.source_name = writer.prefix() + ".c";
   files.has_inverse = code.has_inverse;
+  const std::string declarations = writer.expand(code.header);
+  const std::string definitions = writer.expand(code.source);
+  const std::string stamp_name = guard_base + "_EXPORT_STAMP";
+  const std::uint64_t stamp = text_digest({preamble, declarations, definitions});
   files.header = fmt::format(
-      "/* {}: declarations.\n{}\n#ifndef {}\n#define {}\n\n#ifdef __cplusplus\nextern \"C\" {{\n"
+      "/* {}: declarations.\n{}\n#ifndef {}\n#define {}\n\n"
+      "/* Digest of this export; {} checks it. */\n#define {} 0x{:016x}ULL\n\n"
+      "#ifdef __cplusplus\nextern \"C\" {{\n"
       "#endif\n\ntypedef {} {}_real;\n\n{}\n#ifdef __cplusplus\n}}\n#endif\n\n#endif /* {} */\n",
-      files.header_name, preamble, guard, guard, writer.single() ? "float" : "double",
-      writer.prefix(), writer.expand(code.header), guard);
-  files.source =
-      fmt::format("/* {}: tables and functions.\n{}\n#include \"{}\"\n\n#include <math.h>\n\n{}",
-                  files.source_name, preamble, files.header_name, writer.expand(code.source));
+      files.header_name, preamble, guard, guard, files.source_name, stamp_name, stamp,
+      writer.single() ? "float" : "double", writer.prefix(), declarations, guard);
+  files.source = fmt::format(
+      "/* {}: tables and functions.\n{}\n#include \"{}\"\n\n"
+      "/* A header from another export (e.g. after an interrupted one) must not build. */\n"
+      "#if !defined({}) || {} != 0x{:016x}ULL\n"
+      "#error \"{} and {} come from different exports: export the model again\"\n#endif\n\n"
+      "#include <math.h>\n\n{}",
+      files.source_name, preamble, files.header_name, stamp_name, stamp_name, stamp,
+      files.header_name, files.source_name, definitions);
   return files;
 }
 

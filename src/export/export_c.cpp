@@ -62,17 +62,22 @@ CCode generate_c(const DynamicModel& model, const CExportOptions& options) {
       "model");
 }
 
-CCode export_c(const DynamicModel& model, const std::filesystem::path& folder,
-               const CExportOptions& options) {
+void write_c(const CCode& code, const std::filesystem::path& folder) {
   std::error_code error;
   if (!std::filesystem::is_directory(folder, error)) {
     throw Error(fmt::format("C export: the output folder '{}' does not exist or is not a folder",
                             folder.string()),
                 "out");
   }
+  const io::FileContent files[] = {{folder / code.header_name, code.header},
+                                   {folder / code.source_name, code.source}};
+  io::write_files_atomically(files);
+}
+
+CCode export_c(const DynamicModel& model, const std::filesystem::path& folder,
+               const CExportOptions& options) {
   CCode code = generate_c(model, options);
-  io::write_file_atomically(folder / code.header_name, code.header);
-  io::write_file_atomically(folder / code.source_name, code.source);
+  write_c(code, folder);
   return code;
 }
 

@@ -10,6 +10,7 @@
 #include <memory>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -111,44 +112,79 @@ void write_through(const fs::path& path, const fs::path& target, std::string_vie
   if (error) fail_write(path, error, "writing");
 }
 
+//! One output on its way: the content staged in a flushed temporary file beside the target (or,
+//! for a device or FIFO, kept to be written through), then committed by one rename.
+class StagedOutput {
+ public:
+  StagedOutput(const fs::path& path, std::string_view content)
+      : path_(path), resolved_(resolve_output(path)) {
+    // A symbolic link is followed: its target is replaced and the link kept.
+    if (resolved_.kind == OutputKind::special) {
+      through_content_ = content;
+      return;
+    }
+    const fs::path temporary = temporary_path_for(resolved_.path);
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+      fail_write(path, errno, fmt::format("creating the temporary file '{}'", temporary.string()));
+    }
+    file_ = std::make_unique<TemporaryFile>(temporary, fd);
+
+    // Keep the permission bits of a file being replaced (the new one would get the umask default).
+    struct stat target_status {};
+    if (::stat(resolved_.path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
+      static_cast<void>(::fchmod(file_->fd(), target_status.st_mode & 07777));  // best effort
+    }
+    if (const int error = write_all(file_->fd(), content)) fail_write(path, error, "writing");
+    while (::fsync(file_->fd()) != 0) {
+      if (errno != EINTR) fail_write(path, errno, "flushing to disk");
+    }
+    if (const int error = file_->close()) fail_write(path, error, "closing");
+  }
+
+  void commit() {
+    if (!file_) {
+      write_through(path_, resolved_.path, through_content_);
+      return;
+    }
+    std::error_code rename_error;
+    fs::rename(file_->path(), resolved_.path, rename_error);
+    if (rename_error) {
+      throw Error(fmt::format("cannot write '{}': {} (renaming '{}' over it)", path_.string(),
+                              rename_error.message(), file_->path().string()));
+    }
+    file_->commit();
+  }
+
+  void sync() const {
+    if (file_) sync_folder(resolved_.path.parent_path());
+  }
+
+ private:
+  fs::path path_;
+  OutputTarget resolved_;
+  std::unique_ptr<TemporaryFile> file_;  // null for a device or FIFO
+  std::string_view through_content_;
+};
+
 }  // namespace
 
 void write_file_atomically(const fs::path& path, std::string_view content) {
-  // A symbolic link is followed: its target is replaced and the link kept.
-  const OutputTarget resolved = resolve_output(path);
-  if (resolved.kind == OutputKind::special) {
-    write_through(path, resolved.path, content);
-    return;
-  }
-  const fs::path& target = resolved.path;
+  StagedOutput output(path, content);
+  output.commit();
+  output.sync();
+}
 
-  const fs::path temporary = temporary_path_for(target);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) {
-    fail_write(path, errno, fmt::format("creating the temporary file '{}'", temporary.string()));
-  }
-  TemporaryFile file(temporary, fd);
-
-  // Keep the permission bits of a file being replaced (the new one would get the umask default).
-  struct stat target_status {};
-  if (::stat(target.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
-    static_cast<void>(::fchmod(file.fd(), target_status.st_mode & 07777));  // best effort
-  }
-
-  if (const int error = write_all(file.fd(), content)) fail_write(path, error, "writing");
-  while (::fsync(file.fd()) != 0) {
-    if (errno != EINTR) fail_write(path, errno, "flushing to disk");
-  }
-  if (const int error = file.close()) fail_write(path, error, "closing");
-
-  std::error_code rename_error;
-  fs::rename(temporary, target, rename_error);
-  if (rename_error) {
-    throw Error(fmt::format("cannot write '{}': {} (renaming '{}' over it)", path.string(),
-                            rename_error.message(), temporary.string()));
-  }
-  file.commit();
-  sync_folder(target.parent_path());
+void write_files_atomically(std::span<const FileContent> files) {
+  std::vector<StagedOutput> staged;
+  staged.reserve(files.size());
+  for (const auto& file : files)
+    staged.emplace_back(file.path, file.content);
+  // Nothing but the renames between the first and the last commit.
+  for (auto& output : staged)
+    output.commit();
+  for (const auto& output : staged)
+    output.sync();
 }
 
 std::string read_file(const fs::path& path) {

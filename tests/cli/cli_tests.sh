@@ -916,6 +916,17 @@ C
   expect_ok "$HYST" export --model known.json --out c --prefix piezo_f --float
   gcc -std=c99 -Wall -Wextra -Werror -pedantic -c -o c/piezo_f.o c/piezo_f.c 2>gcc.txt ||
     fail "gcc (float): $(cat gcc.txt)"
+  # A header and a source of two different exports (as an interrupted export could leave them)
+  # do not build: the source checks the header's digest.
+  mkdir other
+  write_pi_model other.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.2
+  expect_ok "$HYST" export --model other.json --out other --prefix piezo
+  cp other/piezo.h c/piezo.h
+  if gcc -std=c99 -c -o c/mixed.o c/piezo.c 2>gcc.txt; then
+    fail "a source compiled with the header of another export"
+  elif ! grep -q "come from different exports" gcc.txt; then
+    fail "the mixed export failed for another reason: $(cat gcc.txt)"
+  fi
   expect_no_temporaries
 }
 
@@ -931,6 +942,19 @@ case_export_bad_inputs() {
   printf '{"model": "kp", "version": 1, "params": {"levels": 4, "lower": 0, "upper": 1, "weights": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]}}\n' >kp.json
   expect_error 1 "kp.json" "'kp' is not supported" -- "$HYST" export --model kp.json --out out
   [ -z "$(ls out)" ] || fail "files were written for failed exports: $(ls out)"
+}
+
+# An allocation that fails (the address space limited by ulimit -v) ends in one line that names
+# the command and the size asked for, never in a bare std::bad_alloc or a crash. Resampling a
+# 200-sample record to a 1.5e-6 input grid asks for about 10^7 samples, a vector that grows past
+# the limit. Not run under AddressSanitizer, whose shadow memory needs the address space.
+case_out_of_memory() {
+  awk 'BEGIN { print "v,y"; for (k = 0; k < 200; ++k) { v = sin(0.1 * k); print v "," v * v * v } }' >r.csv
+  expect_error 1 "out of memory running 'hyst fit pi --data r.csv" "input-grid:1.5e-6'" \
+    "an allocation of" "bytes) failed" -- \
+    bash -c 'ulimit -v 200000 && exec "$0" "$@"' "$HYST" fit pi --data r.csv --input v --output y \
+    --out m.json --resample input-grid:1.5e-6
+  [ ! -e m.json ] || fail "m.json was written by a failed fit"
 }
 
 # --- main -------------------------------------------------------------------------------------

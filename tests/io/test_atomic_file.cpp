@@ -141,6 +141,29 @@ TEST_F(AtomicFileTest, FailedWriteKeepsTheExistingFileIntact) {
   EXPECT_EQ(entries(), std::vector<std::string>{"model.csv"});
 }
 
+TEST_F(AtomicFileTest, FilesWrittenTogetherAreAllReplaced) {
+  put(dir_ / "model.json", "old model\n");
+  const FileContent files[] = {{dir_ / "model.json", "new model\n"},
+                               {dir_ / "report.md", "new report\n"}};
+  write_files_atomically(files);
+  EXPECT_EQ(slurp(dir_ / "model.json"), "new model\n");
+  EXPECT_EQ(slurp(dir_ / "report.md"), "new report\n");
+  EXPECT_EQ(entries(), (std::vector<std::string>{"model.json", "report.md"}));
+}
+
+// The second file cannot be written (its folder is missing): the first, whose content was already
+// staged, is left as it was, and no temporary file stays behind.
+TEST_F(AtomicFileTest, FilesWrittenTogetherAreAllKeptWhenOneFails) {
+  put(dir_ / "model.json", "old model\n");
+  const fs::path report = dir_ / "missing" / "report.md";
+  const FileContent files[] = {{dir_ / "model.json", "new model\n"}, {report, "new report\n"}};
+  EXPECT_HYST_ERROR(write_files_atomically(files),
+                    fmt::format("cannot write '{}': the folder '{}' does not exist",
+                                report.string(), (dir_ / "missing").string()));
+  EXPECT_EQ(slurp(dir_ / "model.json"), "old model\n");
+  EXPECT_EQ(entries(), std::vector<std::string>{"model.json"});
+}
+
 TEST_F(AtomicFileTest, ExistingFolderAsTargetThrowsAndIsKept) {
   const fs::path target = dir_ / "folder";
   fs::create_directory(target);

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -87,6 +88,23 @@ inline void write_text_output(const std::string& path, std::string_view text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
     throw Error("cannot write to standard output");
   }
+}
+
+//! One text output of a command: its path ("-": standard output) and its content.
+struct TextOutput {
+  std::string path;
+  std::string_view text;
+};
+
+//! Writes the text outputs of one command together: the files as io::write_files_atomically()
+//! does (all contents flushed before the first rename), then the ones for standard output.
+inline void write_text_outputs(std::initializer_list<TextOutput> outputs) {
+  std::vector<io::FileContent> files;
+  for (const auto& output : outputs)
+    if (!is_stdout(output.path)) files.push_back({output.path, output.text});
+  io::write_files_atomically(files);
+  for (const auto& output : outputs)
+    if (is_stdout(output.path)) write_text_output(output.path, output.text);
 }
 
 //! Where the "wrote ..." messages go: standard error when standard output carries an output.

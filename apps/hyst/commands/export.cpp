@@ -46,14 +46,14 @@ void run(const ExportOptions& options) {
   export_options.source = std::filesystem::path(options.model).filename().string();
   CCode code;
   try {
-    // The file names depend on the prefix: known once the code is generated (cheap).
+    // The file names depend on the prefix: known once the code is generated.
     code = generate_c(*model, export_options);
     const auto folder = std::filesystem::path(options.out);
     if (std::filesystem::is_directory(folder)) {
       io::check_outputs({{options.model, "--model"}}, {{folder / code.header_name, "--out"},
                                                        {folder / code.source_name, "--out"}});
     }
-    code = export_c(*model, options.out, export_options);
+    write_c(code, folder);
   } catch (const Error& error) {
     throw Error(fmt::format("{}: {}", options.model, error.what()));
   }

@@ -225,12 +225,13 @@ void run(const FitOptions& options) {
   if (report.validation) info["validation"] = metrics_json(*report.validation);
   if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
 
-  if (is_stdout(options.out)) {
-    write_text_output(options.out, model_to_json(*outcome.model, info).dump(2) + "\n");
+  // The model file and its report are replaced together (see write_text_outputs()).
+  const std::string model_text = model_to_json(*outcome.model, info).dump(2) + "\n";
+  if (options.report.empty()) {
+    write_text_outputs({{options.out, model_text}});
   } else {
-    save_model(options.out, *outcome.model, info);
+    write_text_outputs({{options.out, model_text}, {options.report, report.full()}});
   }
-  if (!options.report.empty()) write_text_output(options.report, report.full());
 
   auto* messages = message_stream(is_stdout(options.out) || is_stdout(options.report));
   fmt::print(messages, "{}\n", report.brief());

@@ -64,8 +64,13 @@ struct CCode {
 //! bad prefix (field "prefix").
 CCode generate_c(const DynamicModel& model, const CExportOptions& options);
 
-//! generate_c(), then writes both files into `folder` atomically. The folder must exist
-//! (hyst::Error naming it otherwise). Returns what was written.
+//! Writes the two files of `code` into `folder` (which must exist; hyst::Error naming it
+//! otherwise) together, as io::write_files_atomically() does. The header defines
+//! <PREFIX>_EXPORT_STAMP, a digest of both files' text, and the source refuses to compile
+//! (#error) with a header of another export, so that a mixed pair cannot be built silently.
+void write_c(const CCode& code, const std::filesystem::path& folder);
+
+//! generate_c(), then write_c(). Returns what was written.
 CCode export_c(const DynamicModel& model, const std::filesystem::path& folder,
                const CExportOptions& options);
 

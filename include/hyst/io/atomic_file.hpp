@@ -13,6 +13,7 @@
 //! device or FIFO is written through (opened for writing, no temporary file, no rename).
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -26,6 +27,21 @@ namespace hyst::io {
 //! e.g. "cannot write 'out/fit.csv': No such file or directory (creating the temporary file
 //! 'out/.fit.csv.tmp.4711.0')".
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+//! One file of a set written by write_files_atomically().
+struct FileContent {
+  std::filesystem::path path;
+  std::string_view content;
+};
+
+//! Replaces several files that belong together (a C header and its source, a model file and its
+//! report), each as write_file_atomically() does, but in two phases: every content is first
+//! written to its temporary file and flushed to disk, then the temporary files are renamed over
+//! their targets one right after the other, with no other work in between. An error or a kill
+//! while the contents are written (the long part) leaves every target as it was; only a kill
+//! between two renames, a window of microseconds, leaves some targets new and the rest old.
+//! Files in one folder that must never be seen mixed go into an OutputSet (output_set.hpp).
+void write_files_atomically(std::span<const FileContent> files);
 
 //! The whole content of a file, byte for byte, at most limits::kMaxInputBytes (256 MiB; a longer
 //! file or an endless stream is an error). Throws hyst::Error naming the path and the reason,
