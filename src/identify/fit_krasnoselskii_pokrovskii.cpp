@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "detail/regressor_matrix.hpp"
 #include "hyst/core/error.hpp"
 #include "weight_fit.hpp"
 
@@ -33,7 +34,7 @@ KpFit fit_krasnoselskii_pokrovskii(std::span<const double> input, std::span<cons
   const KrasnoselskiiPokrovskii probe(params);
   auto state = probe.initial_state();
   const auto m = static_cast<Eigen::Index>(parts.fit_input.size());
-  Eigen::MatrixXd A(m, static_cast<Eigen::Index>(kernels));
+  Eigen::MatrixXd A = detail::regressor_matrix(m, static_cast<Eigen::Index>(kernels), "KP fit");
   for (Eigen::Index k = 0; k < m; ++k) {
     probe.step(state, parts.fit_input[static_cast<std::size_t>(k)]);
     A.row(k) = Eigen::Map<const Eigen::RowVectorXd>(state.kernels.data(),

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "detail/regressor_matrix.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/operators/dead_zone.hpp"
@@ -70,7 +71,8 @@ ModifiedPiFit fit_modified_prandtl_ishlinskii(std::span<const double> input,
   const double eps_g = options.min_weight;
   const std::size_t n = r.size();
   const auto m = static_cast<Eigen::Index>(parts.fit_input.size());
-  Eigen::MatrixXd A(m, static_cast<Eigen::Index>(n + above + below));
+  Eigen::MatrixXd A =
+      detail::regressor_matrix(m, static_cast<Eigen::Index>(n + above + below), "modified PI fit");
   Eigen::VectorXd b(m);
   const bool periodic = options.initial_state == PiFitOptions::InitialState::periodic;
   const auto initial = periodic ? pi_periodic_state(probe, input) : probe.initial_state();

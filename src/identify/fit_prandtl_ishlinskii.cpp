@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <Eigen/Core>
 
+#include "detail/regressor_matrix.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
@@ -79,8 +80,9 @@ void validate_options(const PiFitOptions& options) {
 // Play outputs w_j[k] for the record, starting from (and advancing) `state`.
 Eigen::MatrixXd play_columns(const std::vector<double>& thresholds, std::vector<double>& state,
                              std::span<const double> input) {
-  Eigen::MatrixXd columns(static_cast<Eigen::Index>(input.size()),
-                          static_cast<Eigen::Index>(thresholds.size()));
+  Eigen::MatrixXd columns =
+      detail::regressor_matrix(static_cast<Eigen::Index>(input.size()),
+                               static_cast<Eigen::Index>(thresholds.size()), "PI fit");
   for (std::size_t k = 0; k < input.size(); ++k) {
     for (std::size_t j = 0; j < thresholds.size(); ++j) {
       state[j] = play_step(input[k], thresholds[j], state[j]);

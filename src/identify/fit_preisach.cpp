@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <Eigen/Core>
 
+#include "detail/regressor_matrix.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
@@ -275,7 +276,8 @@ PreisachWeightFit fit_preisach_weights(std::span<const double> input,
   const PreisachRelayGrid grid(params);
   auto relay_state = grid.initial_state();
   const auto m = static_cast<Eigen::Index>(fit_input.size());
-  Eigen::MatrixXd A(m, static_cast<Eigen::Index>(relays));
+  Eigen::MatrixXd A =
+      detail::regressor_matrix(m, static_cast<Eigen::Index>(relays), "Preisach fit");
   for (Eigen::Index k = 0; k < m; ++k) {
     grid.step(relay_state, fit_input[static_cast<std::size_t>(k)]);
     for (std::size_t r = 0; r < relays; ++r)
@@ -374,7 +376,8 @@ PreisachForcFit fit_preisach_forcs(std::span<const ReversalCurve> curves,
   const TabulatedPreisach probe({.everett = table, .offset = 0.0});
   TableRegressors regressors{k, std::vector<double>((k + 1) * (k + 1)), std::vector<double>(k + 1)};
 
-  Eigen::MatrixXd A(static_cast<Eigen::Index>(points), static_cast<Eigen::Index>(cells));
+  Eigen::MatrixXd A = detail::regressor_matrix(static_cast<Eigen::Index>(points),
+                                               static_cast<Eigen::Index>(cells), "Preisach fit");
   Eigen::VectorXd y(static_cast<Eigen::Index>(points));
   std::vector<double> measured;
   measured.reserve(points);

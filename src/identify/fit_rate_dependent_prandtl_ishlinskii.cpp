@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "detail/regressor_matrix.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "weight_fit.hpp"
@@ -39,7 +40,7 @@ RateDependentPiFit fit_rate_dependent_prandtl_ishlinskii(std::span<const double>
                      detail::range_of(parts.fit_input);
   const auto m = static_cast<Eigen::Index>(parts.fit_input.size());
   const auto n = static_cast<Eigen::Index>(probe.size());
-  Eigen::MatrixXd A(m, n);
+  Eigen::MatrixXd A = detail::regressor_matrix(m, n, "rate-dependent PI fit");
   Eigen::VectorXd b(m);
   auto state = probe.initial_state();
   for (Eigen::Index k = 0; k < m; ++k) {

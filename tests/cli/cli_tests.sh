@@ -954,6 +954,10 @@ case_out_of_memory() {
     "an allocation of" "bytes) failed" -- \
     bash -c 'ulimit -v 200000 && exec "$0" "$@"' "$HYST" fit pi --data r.csv --input v --output y \
     --out m.json --resample input-grid:1.5e-6
+  # With room for the resampled record, the fit's regressor matrix (8.6 10^6 x 10) is too large.
+  expect_error 1 "fitting 'pi' to r.csv" "regressor matrix of" "does not fit in memory" -- \
+    bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$HYST" fit pi --data r.csv --input v --output y \
+    --out m.json --resample input-grid:1.5e-6
   [ ! -e m.json ] || fail "m.json was written by a failed fit"
 }
 
