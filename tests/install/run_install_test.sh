@@ -1,16 +1,35 @@
 #!/usr/bin/env bash
-# Installs hyst from a build tree into a temporary prefix, then configures, builds and runs the
-# consumer project against it with find_package(hyst).
-# Usage: run_install_test.sh <hyst build dir> <consumer source dir>
+# Installs hyst from a build tree into a temporary prefix, then configures, builds and runs the two
+# consumer projects against it with find_package(hyst): consumer_core/ (hyst::core alone, whose
+# link line must name neither Ceres nor matio nor zlib) and consumer/ (hyst::hyst).
+# Usage: run_install_test.sh <hyst build dir> <folder of the consumer projects>
 set -euo pipefail
 build_dir=$1
-consumer_dir=$2
+consumers_dir=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
 config=$(find "$work/prefix" -name hystConfig.cmake | head -n 1)
 test -n "$config" || { echo "no package config installed"; exit 1; }
-cmake -S "$consumer_dir" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" \
-  || { cat "$work/configure.log"; exit 1; }
-cmake --build "$work/build" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
-"$work/build/consumer"
+
+# Configures and builds consumer project $1 into $work/$1 (its link line in $work/$1.link).
+build_consumer() {
+  local name=$1
+  cmake -S "$consumers_dir/$name" -B "$work/$name" -DCMAKE_PREFIX_PATH="$work/prefix" \
+    > "$work/$name.configure.log" || { cat "$work/$name.configure.log"; exit 1; }
+  cmake --build "$work/$name" --verbose > "$work/$name.build.log" 2>&1 \
+    || { cat "$work/$name.build.log"; exit 1; }
+  cat "$work/$name"/CMakeFiles/"$name".dir/link.txt > "$work/$name.link"
+}
+
+build_consumer consumer_core
+grep -q 'libhyst_core\.a' "$work/consumer_core.link" \
+  || { echo "consumer_core does not link libhyst_core.a:"; cat "$work/consumer_core.link"; exit 1; }
+if grep -E -i 'ceres|matio|libz\.|-lz\b|hyst_(io|identify|registry)' "$work/consumer_core.link"; then
+  echo "consumer_core (hyst::core alone) links more than the core layer (line above)"
+  exit 1
+fi
+"$work/consumer_core/consumer_core"
+
+build_consumer consumer
+"$work/consumer/consumer"
