@@ -67,6 +67,8 @@ void bind_identify(py::module_& module) {
       .def_readonly("seconds", &FitReport::seconds, "wall time of the fit [s]")
       .def_readonly("preprocessing", &FitReport::preprocessing,
                     "how the record was prepared before fitting, one line per step")
+      .def_readonly("validation_rule", &FitReport::validation_rule,
+                    "how the validation was predicted, in words (empty: no validation)")
       .def("brief", &FitReport::brief, "One paragraph.")
       .def("full", &FitReport::full, "A multi-line table of every field.")
       .def("__str__", &FitReport::brief)

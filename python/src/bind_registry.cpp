@@ -208,6 +208,7 @@ void bind_registry(py::module_& module) {
          const std::optional<InputArray>& validation_input,
          const std::optional<InputArray>& validation_output, std::optional<std::string> cycles,
          bool detrend, std::string_view resample, double resample_step, double band,
+         std::string_view validation_start, std::string_view validation_align,
          const py::kwargs& options) {
         const auto& entry = registry().find(name);
         if (!entry.can_fit()) {
@@ -223,6 +224,8 @@ void bind_registry(py::module_& module) {
           request.validation_input = as_span(*validation_input, "validation_input");
           request.validation_output = as_span(*validation_output, "validation_output");
         }
+        request.validation.start = validation_start_from_string(validation_start);
+        request.validation.align = validation_alignment_from_string(validation_align);
         request.options = python_to_json(options, "");
         request.preprocessing.band = band;
         request.preprocessing.detrend = detrend;
@@ -239,7 +242,12 @@ void bind_registry(py::module_& module) {
       "name"_a, "input"_a, "output"_a, "validation_input"_a = py::none(),
       "validation_output"_a = py::none(), py::kw_only(), "cycles"_a = py::none(),
       "detrend"_a = false, "resample"_a = "none", "resample_step"_a = 0.0, "band"_a = 0.0,
-      "Fits a registered model by name: returns (Model, FitReport). Keyword options are the "
+      "validation_start"_a = "rest", "validation_align"_a = "none",
+      "Fits a registered model by name: returns (Model, FitReport). A separate validation record "
+      "is predicted from validation_start: \"rest\" (the model's initial state), \"periodic\" "
+      "(the record's own periodic steady state) or \"continue\" (where the fit record ended), "
+      "with validation_align=\"first-sample\" shifting the prediction to the measured first "
+      "sample; report.validation_rule says which. Keyword options are the "
       "model's fit options (see ModelEntry.fit_options), e.g. operators=20, "
       "initial_state=\"periodic\". The record can be prepared first (hyst.data.preprocess): "
       "detrend=True removes drift between cycles, cycles=\"2-3\" keeps those cycles, "

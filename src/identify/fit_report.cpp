@@ -83,7 +83,10 @@ std::string FitReport::brief() const {
       "{:.6g} with {} parameters. {}",
       model, method, to_string(termination), iterations, seconds, message, initial_cost, final_cost,
       parameters, metrics_sentence("Fit", fit));
-  if (validation) text += fmt::format(" {}", metrics_sentence("Validation", *validation));
+  if (validation) {
+    text += fmt::format(" {}", metrics_sentence("Validation", *validation));
+    if (!validation_rule.empty()) text += fmt::format(" Validation on the {}.", validation_rule);
+  }
   if (!preprocessing.empty()) {
     text += fmt::format(" Preprocessing: {}.", fmt::join(preprocessing, "; "));
   }
@@ -109,6 +112,7 @@ std::string FitReport::full() const {
   for (std::size_t i = 0; i < preprocessing.size(); ++i) {
     line(i == 0 ? "preprocessing" : "", preprocessing[i]);
   }
+  if (validation && !validation_rule.empty()) line("validation", validation_rule);
   text += "\n";
   text += fmt::format("  {:<12}{:>10}{:>14}{:>12}{:>14}\n", "part", "samples", "RMSE", "NRMSE [%]",
                       "max error");

@@ -58,7 +58,6 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
 }
 
 FitOutcome fit(const FitRequest& request) {
-  require_no_validation_record(request, "backlash-like");
   JsonFields fields(request.options, "fit options");
   DuhemFitOptions options;
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);

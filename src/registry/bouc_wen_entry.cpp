@@ -79,7 +79,6 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
 }
 
 FitOutcome fit(const FitRequest& request) {
-  require_no_validation_record(request, "Bouc-Wen");
   JsonFields fields(request.options, "fit options");
   BoucWenFitOptions options;
   options.fit_n = fields.boolean_or("fit_n", options.fit_n);

@@ -89,12 +89,6 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
 }
 
 FitOutcome fit(const FitRequest& request) {
-  if (!request.validation_input.empty()) {
-    throw Error(
-        "the Bouc-Wen oscillator fit validates on the last part of the record only "
-        "(--validate-fraction)",
-        "validation_input");
-  }
   JsonFields fields(request.options, "fit options");
   BoucWenOscillatorFitOptions options;
   options.sample_time = fields.number_or("sample_time", options.sample_time);

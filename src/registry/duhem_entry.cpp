@@ -75,7 +75,6 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
 }
 
 FitOutcome fit(const FitRequest& request) {
-  require_no_validation_record(request, "Duhem");
   JsonFields fields(request.options, "fit options");
   DuhemFitOptions options;
   options.substeps = fields.count_or("substeps", options.substeps);

@@ -41,15 +41,4 @@ std::unique_ptr<DynamicInverse> make_monotone_inverse(const typename Codec::Mode
       Inverse(model, input_min, input_max), std::move(inverse_state), state_to_json);
 }
 
-// The fit request's held-out record is not supported by the single-record fitters of these
-// models: a clear error instead of a silently ignored option.
-inline void require_no_validation_record(const FitRequest& request, std::string_view model) {
-  if (!request.validation_input.empty()) {
-    throw Error(fmt::format("the {} fit validates on the last part of the record only "
-                            "(--validate-fraction), not on a separate validation record",
-                            model),
-                "validation_input");
-  }
-}
-
 }  // namespace hyst::detail

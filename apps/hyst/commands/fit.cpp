@@ -37,6 +37,8 @@ struct FitOptions {
   std::string report;
   std::optional<std::size_t> table;
   std::optional<std::size_t> validation_table;
+  std::string validation_start = "rest";
+  std::string validation_align = "none";
   std::string cycles;
   bool detrend = false;
   std::string resample;
@@ -186,6 +188,10 @@ void run(const FitOptions& options) {
                                {"output", output},
                                {"samples", held_out->input.size()}};
     if (options.validation_table) data_info["validation"]["table"] = *options.validation_table;
+    request.validation.start = validation_start_from_string(options.validation_start);
+    request.validation.align = validation_alignment_from_string(options.validation_align);
+    data_info["validation"]["start"] = options.validation_start;
+    data_info["validation"]["align"] = options.validation_align;
   }
   request.options = fit_json;
   request.preprocessing = prepare;
@@ -274,6 +280,19 @@ void add_fit_command(CLI::App& app) {
                    "Output column of --validation-data (default: --output)")
       ->needs(validation);
   fraction->excludes(validation);
+  command
+      ->add_option("--validation-start", options->validation_start,
+                   "State the --validation-data prediction starts from: rest (the model's "
+                   "initial state), periodic (the record's own periodic steady state) or "
+                   "continue (where the fit record ended)")
+      ->capture_default_str()
+      ->needs(validation);
+  command
+      ->add_option("--validation-align", options->validation_align,
+                   "none, or first-sample: shift the prediction to the measured first sample "
+                   "(records zeroed separately)")
+      ->capture_default_str()
+      ->needs(validation);
   command->add_option("--options", options->options_json,
                       "Fit options as a JSON object, e.g. '{\"operators\": 12}'");
   command

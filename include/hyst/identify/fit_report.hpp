@@ -71,6 +71,9 @@ struct FitReport {
   //! (cycles selected, drift removed, resampled; see hyst/data/preprocessing.hpp); empty when it
   //! was used as measured.
   std::vector<std::string> preprocessing;
+  //! How `validation` was predicted, in words (registry/validation_rule.hpp); empty when the
+  //! fitter alone decided it.
+  std::string validation_rule;
 
   //! One paragraph: model, method, termination, cost, fit and validation error, preprocessing.
   std::string brief() const;

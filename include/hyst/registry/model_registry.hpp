@@ -18,6 +18,7 @@
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/registry/dynamic_model.hpp"
+#include "hyst/registry/validation_rule.hpp"
 
 namespace hyst {
 
@@ -34,7 +35,8 @@ struct ParameterInfo {
 //!
 //! Validation is either the last `validate_fraction` of the record (contiguous, never shuffled;
 //! predicted by continuing the simulation from the state at the end of the fit part) or a
-//! separate held-out record (validation_input/validation_output), never both.
+//! separate held-out record (validation_input/validation_output), predicted by fit_model() under
+//! `validation` (the fitter never sees it), never both.
 struct FitRequest {
   std::span<const double> input;
   std::span<const double> output;
@@ -46,6 +48,8 @@ struct FitRequest {
   //! validation record gets the drift removal only (data::prepare_validation()); a held-out
   //! fraction is the end of the prepared record.
   data::Preprocessing preprocessing;
+  //! How a separate validation record is predicted (validation_rule.hpp).
+  ValidationRule validation;
 };
 
 struct FitOutcome {
