@@ -44,6 +44,7 @@
 #include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
+#include "hyst/core/assert.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -273,6 +274,7 @@ class JilesAtherton {
 
   //! Advances to field H [A/m] (linear between samples) and returns B [T]. No allocation.
   double step(State& state, double field) const noexcept {
+    HYST_ASSERT(std::isfinite(field), "step() needs a finite field");
     const double dh = field - state.field;
     if (dh != 0.0) {
       detail::ja_advance(coefficients_, params_.variant, state.field, dh,
