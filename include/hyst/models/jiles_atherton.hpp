@@ -254,8 +254,13 @@ class JilesAtherton {
   const Params& params() const { return params_; }
   //! Demagnetised: H = 0, M = M_irr = 0.
   State initial_state() const { return {}; }
-  //! At field H with magnetisation M; throws hyst::Error unless both are finite and |M| < M_s.
+  //! At field H with magnetisation M, M_irr from M = c M_an + (1 - c) M_irr; throws hyst::Error
+  //! unless both are finite and |M| < M_s.
   State state_at(double field, double magnetisation) const;
+  //! A whole state as a running model holds it (M_irr drifts from that relation by the rounding
+  //! of the integration, so a copy that must continue exactly keeps it); throws hyst::Error unless
+  //! M_irr is finite and the direction is +1 or -1, and as above.
+  State state_at(double field, double magnetisation, double irreversible, double direction) const;
 
   //! M_an(H_e) = M_s L(H_e / a) [A/m].
   double anhysteretic(double effective_field) const {
