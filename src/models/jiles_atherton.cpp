@@ -47,6 +47,19 @@ JilesAtherton::State JilesAtherton::state_at(double field, double magnetisation)
   return state;
 }
 
+JilesAtherton::State JilesAtherton::state_at(double field, double magnetisation,
+                                             double irreversible, double direction) const {
+  State state = state_at(field, magnetisation);
+  const detail::ParameterRules rules{"Jiles-Atherton state"};
+  rules.finite(irreversible, "irreversible magnetisation M_irr", "irreversible");
+  if (direction != 1.0 && direction != -1.0) {
+    rules.fail("direction", "direction", direction, "must be 1 or -1");
+  }
+  state.irreversible = irreversible;
+  state.direction = direction;
+  return state;
+}
+
 double JilesAtherton::susceptibility(const State& state, double direction) const {
   const auto& p = coefficients_;
   const double delta = direction >= 0.0 ? 1.0 : -1.0;

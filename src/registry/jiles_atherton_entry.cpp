@@ -41,12 +41,23 @@ struct JilesAthertonCodec {
     return p;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
-    return {{"field", state.field}, {"magnetisation", state.magnetisation}};
+    return {{"field", state.field},
+            {"magnetisation", state.magnetisation},
+            {"irreversible", state.irreversible},
+            {"direction", state.direction}};
   }
+  // "irreversible" and "direction" may be left out (files written before they were stored):
+  // M_irr then follows from M, and the direction is +1.
   static Model::State state_from_json(const Model& model, JsonFields& fields) {
     const double field = fields.number("field");
     const double magnetisation = fields.number("magnetisation");
-    return model.state_at(field, magnetisation);
+    if (!fields.has("irreversible") && !fields.has("direction")) {
+      return state_at(fields, [&] { return model.state_at(field, magnetisation); });
+    }
+    const double irreversible = fields.number("irreversible");
+    const double direction = fields.number("direction");
+    return state_at(fields,
+                    [&] { return model.state_at(field, magnetisation, irreversible, direction); });
   }
   static std::size_t parameter_count(const Model&) { return 5; }
   static std::string describe(const Model& model) {

@@ -22,9 +22,26 @@
 
 namespace hyst::detail {
 
+// A run of plays w_j = c + s r_j, j in [start, end), with start the end of the segment above it
+// (or 0).
+struct PiBatchSegment {
+  std::size_t end;
+  double c;
+  double s;      // -1 (risen to c) or +1 (fallen to c)
+  double total;  // output sum of this segment and of everything below it
+};
+
+// The memory invert_pi_batch works in, kept by its caller: a batch after the first on the same
+// model allocates nothing.
+struct PiBatchWorkspace {
+  std::vector<double> sum_p, sum_pr, sum_pw;
+  std::vector<PiBatchSegment> stack;
+};
+
 inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
                                      PrandtlIshlinskii::State& state,
-                                     std::span<const double> targets, std::span<double> inputs) {
+                                     std::span<const double> targets, std::span<double> inputs,
+                                     PiBatchWorkspace& workspace) {
   require_same_size(targets.size(), "targets", inputs.size(), "inputs");
   require_finite(targets, "targets");
   const auto& r = inverse.inverse_operator().params().thresholds;
@@ -35,20 +52,24 @@ inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
   const std::size_t m = r.size();
 
   // Prefix sums: P[j] = sum_{i<j} p_i, Q[j] = sum_{i<j} p_i r_i, W[j] = sum_{i<j} p_i w_i.
-  std::vector<double> sum_p(m + 1, 0.0), sum_pr(m + 1, 0.0), sum_pw(m + 1, 0.0);
+  auto& sum_p = workspace.sum_p;
+  auto& sum_pr = workspace.sum_pr;
+  auto& sum_pw = workspace.sum_pw;
+  sum_p.assign(m + 1, 0.0);
+  sum_pr.assign(m + 1, 0.0);
+  sum_pw.assign(m + 1, 0.0);
   for (std::size_t j = 0; j < m; ++j) {
     sum_p[j + 1] = sum_p[j] + p[j];
     sum_pr[j + 1] = sum_pr[j] + p[j] * r[j];
     sum_pw[j + 1] = sum_pw[j] + p[j] * w[j];
   }
-  struct Segment {
-    std::size_t end;  // the segment is [start, end); start = end of the segment above, or 0
-    double c;
-    double s;      // w_j = c + s r_j, s = -1 (risen to c) or +1 (fallen to c)
-    double total;  // output sum of this segment and of everything below it
-  };
-  std::vector<Segment> stack;  // stack.back() is the top segment, starting at j = 0
-  std::size_t untouched = 0;   // plays [untouched, m) still hold the initial state
+  using Segment = PiBatchSegment;
+  // stack.back() is the top segment, starting at j = 0. Every segment ends at another play, so
+  // there are at most m.
+  auto& stack = workspace.stack;
+  stack.clear();
+  stack.reserve(m);
+  std::size_t untouched = 0;  // plays [untouched, m) still hold the initial state
   const auto segment_sum = [&](double c, double s, std::size_t a, std::size_t b) {
     return c * (sum_p[b] - sum_p[a]) + s * (sum_pr[b] - sum_pr[a]);
   };

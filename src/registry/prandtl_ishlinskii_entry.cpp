@@ -23,13 +23,14 @@ class PiInverseAdapter final : public DynamicInverse {
   PiInverseAdapter(InversePrandtlIshlinskii inverse, PrandtlIshlinskii::State state)
       : inverse_(std::move(inverse)), state_(std::move(state)) {}
   InverseReport invert(std::span<const double> targets, std::span<double> inputs) override {
-    return invert_pi_batch(inverse_, state_, targets, inputs);
+    return invert_pi_batch(inverse_, state_, targets, inputs, workspace_);
   }
   nlohmann::json state() const override { return play_state_to_json(state_); }
 
  private:
   InversePrandtlIshlinskii inverse_;
   PrandtlIshlinskii::State state_;
+  PiBatchWorkspace workspace_;
 };
 
 struct PrandtlIshlinskiiCodec {

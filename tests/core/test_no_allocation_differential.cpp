@@ -1,6 +1,7 @@
 // step() of the differential models must not allocate (fixed-size RK4 and Dormand-Prince
 // std::array states, the exact Bouc-Wen path): counted with the replacing operator new over
-// 100 000 steps of each.
+// 100 000 steps of each. The conformance suite covers every model with its example parameters;
+// these are the other integration paths.
 
 #include <cmath>
 #include <vector>
@@ -34,7 +35,6 @@ void expect_no_allocation(const Model& model, double input_scale) {
 
 TEST(NoAllocationDifferential, EveryModelStep) {
   expect_no_allocation(BoucWen(BoucWen::Params{}), 1.0);
-  expect_no_allocation(BoucWenOscillator(BoucWenOscillator::benchmark()), 10.0);
   auto adaptive = BoucWenOscillator::benchmark();
   adaptive.tolerance = 1e-8;  // Boost.Odeint Dormand-Prince on std::array
   expect_no_allocation(BoucWenOscillator(adaptive), 10.0);
@@ -42,7 +42,6 @@ TEST(NoAllocationDifferential, EveryModelStep) {
   bouc_wen_adaptive.n = 1.5;
   bouc_wen_adaptive.tolerance = 1e-8;
   expect_no_allocation(BoucWen(bouc_wen_adaptive), 1.0);
-  expect_no_allocation(Duhem(Duhem::Params{}), 1.0);
   Duhem::Params duhem_adaptive;
   duhem_adaptive.tolerance = 1e-8;
   expect_no_allocation(Duhem(duhem_adaptive), 1.0);

@@ -157,6 +157,12 @@ TEST(JilesAtherton, ExplicitInitialStates) {
     model.step(moved, 100.0);  // no field change: the state is kept
     EXPECT_EQ(moved.magnetisation, 5e5);
     EXPECT_HYST_ERROR(model.state_at(0.0, 2e6), "|magnetisation M| = 2000000 must be < M_s");
+    const auto whole = model.state_at(100.0, 5e5, 4e5, -1.0);
+    EXPECT_EQ(whole.irreversible, 4e5);
+    EXPECT_EQ(whole.direction, -1.0);
+    EXPECT_HYST_ERROR(model.state_at(100.0, 5e5, std::nan(""), 1.0),
+                      "irreversible magnetisation M_irr = nan is not finite");
+    EXPECT_HYST_ERROR(model.state_at(100.0, 5e5, 4e5, 0.0), "direction = 0 must be 1 or -1");
   }
 }
 

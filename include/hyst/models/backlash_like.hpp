@@ -19,6 +19,8 @@
 
 #include <cmath>
 
+#include "hyst/core/assert.hpp"
+
 namespace hyst {
 
 class BacklashLike {
@@ -45,6 +47,7 @@ class BacklashLike {
 
   //! Exact step for an input linear between the samples. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     const double dv = input - state.input;
     if (dv != 0.0) {
       const double s = dv > 0.0 ? 1.0 : -1.0;

@@ -44,6 +44,7 @@
 #include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
+#include "hyst/core/assert.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -180,6 +181,7 @@ class BoucWen {
 
   //! Advances one sample (input linear between the samples) and returns F. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     const double dx = input - state.input;
     if (dx != 0.0) {
       state.hysteretic =

@@ -34,6 +34,7 @@
 #include <string_view>
 
 #include "hyst/core/adaptive_integration.hpp"
+#include "hyst/core/assert.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -117,6 +118,7 @@ class BoucWenOscillator {
 
   //! Advances one sample with input u [N] and returns y [m]. No allocation, no virtual call.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     std::array<double, 3> x{state.displacement, state.velocity, state.hysteretic_force};
     detail::bouc_wen_oscillator_advance(
         coefficients_, x, state.previous_input, input, params_.sample_time, params_.substeps,

@@ -28,6 +28,7 @@
 #include <cstddef>
 
 #include "hyst/core/adaptive_integration.hpp"
+#include "hyst/core/assert.hpp"
 #include "hyst/core/runge_kutta.hpp"
 #include "hyst/models/bouc_wen.hpp"  // detail::substeps_for
 
@@ -94,6 +95,7 @@ class Duhem {
   double coleman_hodgdon_margin() const;
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     const double dv = input - state.input;
     if (dv != 0.0) {
       state.output = detail::duhem_advance(

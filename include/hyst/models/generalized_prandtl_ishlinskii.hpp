@@ -43,6 +43,7 @@
 //! TMech 16(4):734-744; MSMA application: Minorowicz & Milecki (2022), Materials 15:4400, section
 //! 4.1; reference generalized_pi.md.
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -52,6 +53,7 @@
 
 #include <Eigen/Core>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/models/envelopes.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/operators/generalized_play.hpp"
@@ -209,6 +211,8 @@ class GeneralizedPrandtlIshlinskii {
   //! Advances one sample: both envelopes once, every operator, the weighted sum. No allocation,
   //! no virtual call. Precondition: `state` comes from this model and `input` is finite.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(state.play.size() == thresholds_.size(), "state of another model");
     return GpiKernel<E, double>::step(params_.ascending.data(), params_.descending.data(),
                                       thresholds_.data(), weights_.data(), thresholds_.size(),
                                       state.play.data(), input);

@@ -42,6 +42,8 @@
 #include <numbers>
 #include <string_view>
 
+#include "hyst/core/assert.hpp"
+
 namespace hyst {
 
 class IkutaSma {
@@ -98,6 +100,7 @@ class IkutaSma {
 
   //! Advances one sample and returns y. No allocation, no virtual call.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     if (input > state.input) {
       if (state.branch != Branch::heating) {
         const double start = heating_law(state.input);

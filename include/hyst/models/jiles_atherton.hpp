@@ -44,6 +44,7 @@
 #include <type_traits>
 
 #include "hyst/core/adaptive_integration.hpp"
+#include "hyst/core/assert.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -253,8 +254,13 @@ class JilesAtherton {
   const Params& params() const { return params_; }
   //! Demagnetised: H = 0, M = M_irr = 0.
   State initial_state() const { return {}; }
-  //! At field H with magnetisation M; throws hyst::Error unless both are finite and |M| < M_s.
+  //! At field H with magnetisation M, M_irr from M = c M_an + (1 - c) M_irr; throws hyst::Error
+  //! unless both are finite and |M| < M_s.
   State state_at(double field, double magnetisation) const;
+  //! A whole state as a running model holds it (M_irr drifts from that relation by the rounding
+  //! of the integration, so a copy that must continue exactly keeps it); throws hyst::Error unless
+  //! M_irr is finite and the direction is +1 or -1, and as above.
+  State state_at(double field, double magnetisation, double irreversible, double direction) const;
 
   //! M_an(H_e) = M_s L(H_e / a) [A/m].
   double anhysteretic(double effective_field) const {
@@ -273,6 +279,7 @@ class JilesAtherton {
 
   //! Advances to field H [A/m] (linear between samples) and returns B [T]. No allocation.
   double step(State& state, double field) const noexcept {
+    HYST_ASSERT(std::isfinite(field), "step() needs a finite field");
     const double dh = field - state.field;
     if (dh != 0.0) {
       detail::ja_advance(coefficients_, params_.variant, state.field, dh,

@@ -26,12 +26,14 @@
 //! 7.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/operators/kp_kernel.hpp"
 
 namespace hyst {
@@ -74,6 +76,10 @@ class KrasnoselskiiPokrovskii {
 
   //! Advances one sample: every kernel, then the weighted sum. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(
+        state.ridge.size() == params_.levels && state.kernels.size() == params_.weights.size(),
+        "state of another model");
     const std::size_t n = params_.levels;
     double* __restrict rho = state.ridge.data();
     for (std::size_t k = 0; k < n; ++k)

@@ -25,9 +25,11 @@
 //! Swevers (2004); reference other_models.md sec. 6.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 
 namespace hyst {
@@ -70,6 +72,8 @@ class MaxwellSlip {
 
   //! Advances one sample and returns F. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(state.deflection.size() == slip_.size(), "state of another model");
     const double move = input - state.input;
     const double* __restrict k = params_.stiffness.data();
     const double* __restrict limit = slip_.data();

@@ -17,6 +17,9 @@
 //! State: the PI part's play outputs (prandtl_ishlinskii.hpp), by default all 0. Kuhnen's creep
 //! operators are not included. Source: Kuhnen (2003), Eur. J. Control 9(4):407-418.
 
+#include <cmath>
+
+#include "hyst/core/assert.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/operators/dead_zone_superposition.hpp"
 
@@ -45,6 +48,7 @@ class ModifiedPrandtlIshlinskii {
 
   //! Advances one sample. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     return params_.offset + dead_zone_(pi_.step(state, input));
   }
 

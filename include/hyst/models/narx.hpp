@@ -28,6 +28,7 @@
 #include <span>
 #include <vector>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/operators/play.hpp"
 
 namespace hyst {
@@ -75,6 +76,7 @@ class Narx {
   //! One sample in free run: y[k] from v[k] and the state; the state then holds v[k] and y[k] as
   //! the newest lags. No allocation, no virtual call.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     const double output = evaluate(state, input);
     push_front(state.past_outputs, output);
     return output;

@@ -19,12 +19,14 @@
 //! modified PI for saturating or asymmetric loops.
 //! Sources: Krasnosel'skii & Pokrovskii (1989); Brokate & Sprekels (1996); Kuhnen (2003).
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/operators/play.hpp"
 
 namespace hyst {
@@ -65,6 +67,8 @@ class PrandtlIshlinskii {
   //! Advances one sample: updates every play and returns y. No allocation, no virtual call.
   //! Precondition: `state` comes from this model and `input` is finite.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(state.play.size() == params_.thresholds.size(), "state of another model");
     const std::size_t n = params_.thresholds.size();
     const double* __restrict r = params_.thresholds.data();
     double* __restrict w = state.play.data();

@@ -56,6 +56,7 @@
 
 #include <fmt/format.h>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/models/everett_factorised.hpp"
 #include "hyst/models/everett_relay_grid.hpp"
@@ -137,6 +138,7 @@ class BasicPreisach {
   //! Precondition: `state` comes from this model (or one with the same Everett function) and
   //! `input` is finite.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     if (input < everett_.lower()) {
       reset(state, false);
       return params_.offset - total_;

@@ -13,10 +13,12 @@
 //! relay pattern can be set directly (the fast form needs an input history instead).
 //! Source: Preisach (1935); the seed paper's 231-relay model (preisach.md sec. 4).
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/models/preisach.hpp"
 
 namespace hyst {
@@ -48,6 +50,8 @@ class PreisachRelayGrid {
 
   //! Updates every relay and returns y. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(state.relays.size() == params_.everett.weights.size(), "state of another model");
     const std::size_t n = params_.everett.levels;
     const double* c = thresholds_.data();
     const double* mu = params_.everett.weights.data();

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/operators/play.hpp"
 
@@ -73,6 +74,8 @@ class RateDependentPrandtlIshlinskii {
 
   //! Advances one sample. No allocation.
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
+    HYST_ASSERT(state.play.size() == params_.thresholds.size(), "state of another model");
     const double raw = (input - state.input) * inverse_sample_time_;
     state.rate += (raw - state.rate) * filter_gain_;
     state.input = input;

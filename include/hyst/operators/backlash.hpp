@@ -14,7 +14,10 @@
 //! "backlash with saturation" (an assumed form: the seed gives no equation for it).
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include "hyst/core/assert.hpp"
 
 namespace hyst {
 
@@ -40,6 +43,7 @@ class Backlash {
   State make_state(double output) const;
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     const double lower = state.output / params_.gain - params_.half_width;
     const double upper = state.output / params_.gain + params_.half_width;
     double y = state.output;

@@ -26,10 +26,12 @@
 //! TMech 16(4):734-744; reference operators.md section 5.
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 #include <vector>
 
+#include "hyst/core/assert.hpp"
 #include "hyst/models/envelopes.hpp"
 
 namespace hyst {
@@ -114,6 +116,7 @@ class GeneralizedPlay {
   double descending(double input) const { return E::value(params_.descending.data(), input); }
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     state.output =
         generalized_play_step(ascending(input), descending(input), params_.threshold, state.output);
     return state.output;

@@ -14,6 +14,9 @@
 //! operators.md sec. 6.
 
 #include <algorithm>
+#include <cmath>
+
+#include "hyst/core/assert.hpp"
 
 namespace hyst {
 
@@ -43,6 +46,7 @@ class KpKernel {
   State initial_state() const { return State{}; }
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     state.output = kp_kernel_step(kp_ridge(input - up_, two_over_ramp_),
                                   kp_ridge(input - down_, two_over_ramp_), state.output);
     return state.output;

@@ -12,6 +12,9 @@
 //! Sources: Krasnosel'skii & Pokrovskii (1989); Brokate & Sprekels (1996); Kuhnen (2003).
 
 #include <algorithm>
+#include <cmath>
+
+#include "hyst/core/assert.hpp"
 
 namespace hyst {
 
@@ -37,6 +40,7 @@ class Play {
   State make_state(double output) const;
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     state.output = play_step(input, half_width_, state.output);
     return state.output;
   }

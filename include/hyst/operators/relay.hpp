@@ -11,6 +11,10 @@
 //! Initial state: -1 (negative saturation) unless given; the first step already applies the rule.
 //! Source: Preisach (1935); Mayergoyz (1991), "Mathematical Models of Hysteresis".
 
+#include <cmath>
+
+#include "hyst/core/assert.hpp"
+
 namespace hyst {
 
 class Relay {
@@ -31,6 +35,7 @@ class Relay {
   State make_state(double output) const;
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     if (input >= alpha_) {
       state.output = 1.0;
     } else if (input <= beta_) {

@@ -10,6 +10,9 @@
 //! Sources: Brokate & Sprekels (1996); Kuhnen (2003).
 
 #include <algorithm>
+#include <cmath>
+
+#include "hyst/core/assert.hpp"
 
 namespace hyst {
 
@@ -31,6 +34,7 @@ class Stop {
   State state_from_play(double play_output, double input) const;
 
   double step(State& state, double input) const noexcept {
+    HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
     state.output =
         std::min(half_width_, std::max(-half_width_, state.output + input - state.last_input));
     state.last_input = input;

@@ -57,6 +57,12 @@ struct FitOutcome {
   FitReport report;
 };
 
+//! A closed interval of model inputs.
+struct InputRange {
+  double min = -1.0;
+  double max = 1.0;
+};
+
 struct ModelEntry {
   std::string name;
   std::string description;  //!< one line
@@ -71,6 +77,12 @@ struct ModelEntry {
   std::function<FitOutcome(const FitRequest&)> fit;
   //! A small valid parameter set (for `hyst models --example`, tests and documentation).
   nlohmann::json example_params;
+  //! Inputs for which the example model is meant: its hysteresis shows within them and nothing
+  //! overflows. The conformance tests drive every model with inputs from this range.
+  InputRange example_input_range;
+  //! How closely the example model's inverse (where it has one) reproduces a reachable output,
+  //! relative to the output range of a major loop over example_input_range.
+  double example_inverse_tolerance = 1e-6;
 
   bool can_fit() const { return static_cast<bool>(fit); }
 };
