@@ -30,8 +30,8 @@ void bind_compare(py::module_& module) {
           "simulated", [](const ComparedModel& row) { return readonly_copy(row.simulated); },
           "Free run over the whole record (empty when the model failed).")
       .def("__repr__", [](const ComparedModel& row) {
-        return row.ok ? fmt::format("ComparedModel(model='{}', nrmse={:.4g})", row.model,
-                                    row.validation.nrmse)
+        return row.ok ? fmt::format("ComparedModel(model='{}', nrmse_percent={:.4g})", row.model,
+                                    row.validation.nrmse_percent)
                       : fmt::format("ComparedModel(model='{}', failed)", row.model);
       });
 

@@ -15,15 +15,15 @@ namespace hyst::python {
 namespace {
 
 std::string metrics_repr(const ErrorMetrics& m) {
-  return fmt::format("ErrorMetrics(samples={}, rmse={:.6g}, nrmse={:.6g}, max_error={:.6g})",
-                     m.samples, m.rmse, m.nrmse, m.max_error);
+  return fmt::format("ErrorMetrics(samples={}, rmse={:.6g}, nrmse_percent={:.6g}, max_error={:.6g})",
+                     m.samples, m.rmse, m.nrmse_percent, m.max_error);
 }
 
 std::string report_repr(const FitReport& r) {
   std::string text =
       fmt::format("<FitReport {} by {}: {} after {} iterations; fit NRMSE {:.4g} %", r.model,
-                  r.method, to_string(r.termination), r.iterations, 100.0 * r.fit.nrmse);
-  if (r.validation) text += fmt::format("; validation NRMSE {:.4g} %", 100.0 * r.validation->nrmse);
+                  r.method, to_string(r.termination), r.iterations, r.fit.nrmse_percent);
+  if (r.validation) text += fmt::format("; validation NRMSE {:.4g} %", r.validation->nrmse_percent);
   return text + ">";
 }
 
@@ -41,7 +41,8 @@ void bind_identify(py::module_& module) {
                            "predicted; RMSE, NRMSE = RMSE / range(measured), max |e|.")
       .def_readonly("samples", &ErrorMetrics::samples)
       .def_readonly("rmse", &ErrorMetrics::rmse, "[output units]")
-      .def_readonly("nrmse", &ErrorMetrics::nrmse, "RMSE / range of the measured output [-]")
+      .def_readonly("nrmse_percent", &ErrorMetrics::nrmse_percent,
+                    "100 * RMSE / range of the measured output [%]")
       .def_readonly("max_error", &ErrorMetrics::max_error, "[output units]")
       .def("__repr__", &metrics_repr);
   module.def(

@@ -120,7 +120,7 @@ std::string models_that_can_fit(const ModelRegistry& registry) {
 nlohmann::json metrics_json(const ErrorMetrics& metrics) {
   return {{"samples", metrics.samples},
           {"rmse", metrics.rmse},
-          {"nrmse", metrics.nrmse},
+          {"nrmse_percent", metrics.nrmse_percent},
           {"max_error", metrics.max_error}};
 }
 
