@@ -15,14 +15,14 @@ namespace hyst::python {
 namespace {
 
 std::string metrics_repr(const ErrorMetrics& m) {
-  return fmt::format("ErrorMetrics(samples={}, rmse={:.6g}, nrmse_percent={:.6g}, max_error={:.6g})",
-                     m.samples, m.rmse, m.nrmse_percent, m.max_error);
+  return fmt::format(
+      "ErrorMetrics(samples={}, rmse={:.6g}, nrmse_percent={:.6g}, max_error={:.6g})", m.samples,
+      m.rmse, m.nrmse_percent, m.max_error);
 }
 
 std::string report_repr(const FitReport& r) {
-  std::string text =
-      fmt::format("<FitReport {} by {}: {} after {} iterations; fit NRMSE {:.4g} %", r.model,
-                  r.method, to_string(r.termination), r.iterations, r.fit.nrmse_percent);
+  std::string text = fmt::format("<FitReport {} by {}: {} after {} iterations; fit NRMSE {:.4g} %",
+                                 r.model, r.method, r.status(), r.iterations, r.fit.nrmse_percent);
   if (r.validation) text += fmt::format("; validation NRMSE {:.4g} %", r.validation->nrmse_percent);
   return text + ">";
 }
@@ -52,6 +52,17 @@ void bind_identify(py::module_& module) {
       },
       "measured"_a, "predicted"_a, "ErrorMetrics of `predicted` against `measured`.");
 
+  py::class_<ReferenceScore>(module, "ReferenceScore",
+                             "A reference predictor scored on held-out samples.")
+      .def_readonly("name", &ReferenceScore::name)
+      .def_readonly("validation", &ReferenceScore::validation, "ErrorMetrics, or None")
+      .def_readonly("error", &ReferenceScore::error, "Why it could not be made")
+      .def("__repr__", [](const ReferenceScore& r) {
+        return r.validation ? fmt::format("ReferenceScore('{}', nrmse_percent={:.4g})", r.name,
+                                          r.validation->nrmse_percent)
+                            : fmt::format("ReferenceScore('{}', not made)", r.name);
+      });
+
   py::class_<FitReport>(module, "FitReport",
                         "Outcome of a fit. str() gives brief(), full() a table of every field.")
       .def_readonly("model", &FitReport::model)
@@ -66,6 +77,16 @@ void bind_identify(py::module_& module) {
       .def_readonly("validation", &FitReport::validation,
                     "ErrorMetrics on held-out samples, or None")
       .def_readonly("seconds", &FitReport::seconds, "wall time of the fit [s]")
+      .def_property_readonly(
+          "status", [](const FitReport& r) { return std::string(r.status()); },
+          "converged, iteration limit, no progress, degenerate, unstable or failed")
+      .def_readonly("quality_note", &FitReport::quality_note,
+                    "Why the simulation is degenerate or unstable ('' otherwise)")
+      .def_readonly("references", &FitReport::references,
+                    "Reference predictors scored on the held-out part (the yardstick)")
+      .def_property_readonly(
+          "beats_yardstick", [](const FitReport& r) { return r.beats_yardstick(); },
+          "True/False against the best reference predictor, None without one")
       .def_readonly("preprocessing", &FitReport::preprocessing,
                     "how the record was prepared before fitting, one line per step")
       .def("brief", &FitReport::brief, "One paragraph.")

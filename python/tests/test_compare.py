@@ -41,7 +41,13 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     assert len(best.simulated) == len(v)
     assert repr(best).startswith("ComparedModel(model='pi'")
     assert "| 1 | pi |" in comparison.markdown()
-    assert comparison.csv().startswith("rank,model,status")
+    assert comparison.csv().startswith("rank,model,status,validation_nrmse_percent")
+    # The yardstick: the exact PI beats every reference predictor; no no-fit verdict.
+    names = [reference.name for reference in comparison.references]
+    assert names == ["mean", "last value held", "polynomial y(v), degree 3", "ARX(2,2)"]
+    assert best.beats_yardstick and best.report.status in ("converged", "iteration limit")
+    assert comparison.yardstick.startswith("Yardstick (reference predictors")
+    assert comparison.no_fit == "" and comparison.no_fit_percent == 20.0
     page = comparison.html(v, y, title="PI & NARX")
     assert "<h1>PI &amp; NARX</h1>" in page and page.count("<svg ") == 2
     if shutil.which("gnuplot"):

@@ -134,7 +134,9 @@ std::string status_of(const ComparedModel& row) {
   return std::string(row.report->status());
 }
 
-std::string_view yes_no(bool value) { return value ? "yes" : "no"; }
+std::string_view yes_no(bool value) {
+  return value ? "yes" : "no";
+}
 
 const ComparedModel* best_model(const ModelComparison& comparison) {
   const bool any = !comparison.ranking.empty() && comparison.ranking.front().ok;
@@ -157,9 +159,9 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
         "timing_seconds");
   }
   if (!(options.no_fit_percent > 0.0) || !std::isfinite(options.no_fit_percent)) {
-    throw Error(fmt::format("compare: no_fit_percent = {} must be finite and > 0",
-                            options.no_fit_percent),
-                "no_fit_percent");
+    throw Error(
+        fmt::format("compare: no_fit_percent = {} must be finite and > 0", options.no_fit_percent),
+        "no_fit_percent");
   }
   if (input.size() < 2) {
     throw Error(fmt::format("compare: {} samples; a fit part and a validation part need at least "
@@ -188,8 +190,9 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
   }
   const auto* yardstick = best_reference(comparison.references);
   for (auto& row : comparison.ranking) {
-    row.beats_yardstick = row.ok && (yardstick == nullptr || row.validation.nrmse_percent <
-                                                                 yardstick->validation->nrmse_percent);
+    row.beats_yardstick =
+        row.ok && (yardstick == nullptr ||
+                   row.validation.nrmse_percent < yardstick->validation->nrmse_percent);
   }
   comparison.no_fit_percent = options.no_fit_percent;
   if (const auto* best = best_model(comparison);
@@ -250,11 +253,11 @@ std::string model_comparison_markdown(const ModelComparison& comparison) {
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format(
-          "| {} | {} | {:.4g} | {:.4g} | {:.4g} | {} | {} | {:.3g} | {:.3g} | {} |\n", ++rank,
-          row.model, row.validation.nrmse_percent, row.validation.rmse, row.validation.max_error,
-          yes_no(row.beats_yardstick), row.parameters, row.fit_seconds, row.ns_per_sample,
-          status_of(row));
+      text +=
+          fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {} | {} | {:.3g} | {:.3g} | {} |\n",
+                      ++rank, row.model, row.validation.nrmse_percent, row.validation.rmse,
+                      row.validation.max_error, yes_no(row.beats_yardstick), row.parameters,
+                      row.fit_seconds, row.ns_per_sample, status_of(row));
     } else {
       text += fmt::format("| - | {} | - | - | - | - | - | - | - | failed: {} |\n", row.model,
                           markdown_cell(row.error));
@@ -270,13 +273,13 @@ std::string model_comparison_csv(const ModelComparison& comparison) {
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format("{},{},{},{:.8g},{:.8g},{:.8g},{},{},{:.6g},{:.6g},{}\n", ++rank,
-                          row.model, status_of(row), row.validation.nrmse_percent,
-                          row.validation.rmse, row.validation.max_error,
-                          yes_no(row.beats_yardstick), row.parameters, row.fit_seconds,
-                          row.ns_per_sample,
-                          csv_quoted(row.report->quality_note.empty() ? row.report->message
-                                                                      : row.report->quality_note));
+      text +=
+          fmt::format("{},{},{},{:.8g},{:.8g},{:.8g},{},{},{:.6g},{:.6g},{}\n", ++rank, row.model,
+                      status_of(row), row.validation.nrmse_percent, row.validation.rmse,
+                      row.validation.max_error, yes_no(row.beats_yardstick), row.parameters,
+                      row.fit_seconds, row.ns_per_sample,
+                      csv_quoted(row.report->quality_note.empty() ? row.report->message
+                                                                  : row.report->quality_note));
     } else {
       text += fmt::format("-,{},failed,,,,,,,,{}\n", row.model, csv_quoted(row.error));
     }

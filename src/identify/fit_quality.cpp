@@ -11,7 +11,7 @@
 namespace hyst {
 namespace {
 
-constexpr double kBandRanges = 10.0;      // width of the admissible band in measured ranges
+constexpr double kBandRanges = 10.0;       // width of the admissible band in measured ranges
 constexpr double kDegenerateRatio = 0.01;  // std(simulated) / std(measured) below: degenerate
 
 double standard_deviation(std::span<const double> values) {
@@ -41,8 +41,8 @@ std::string_view to_string(FitQuality quality) {
   return "unknown";
 }
 
-QualityVerdict judge_simulation(std::span<const double> measured,
-                                std::span<const double> simulated, std::size_t judged_begin) {
+QualityVerdict judge_simulation(std::span<const double> measured, std::span<const double> simulated,
+                                std::size_t judged_begin) {
   require_same_size(measured.size(), "measured", simulated.size(), "simulated");
   require_not_empty(measured.size(), "measured");
   if (judged_begin >= measured.size()) {

@@ -16,17 +16,17 @@
 namespace hyst {
 namespace {
 
-constexpr double kTurnBack = 0.10;     // of the output range, beyond a branch's end values
-constexpr double kDrift = 0.10;        // of the output range, trend from first to last crossing
-constexpr double kOutOfRange = 0.05;   // of the fit input range, beyond it
+constexpr double kTurnBack = 0.10;    // of the output range, beyond a branch's end values
+constexpr double kDrift = 0.10;       // of the output range, trend from first to last crossing
+constexpr double kOutOfRange = 0.05;  // of the fit input range, beyond it
 
 double range_of(std::span<const double> values) {
   const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
   return *highest - *lowest;
 }
 
-std::optional<std::string> butterfly(std::span<const double> input,
-                                     std::span<const double> output, double output_range) {
+std::optional<std::string> butterfly(std::span<const double> input, std::span<const double> output,
+                                     double output_range) {
   std::vector<data::Branch> branches;
   try {
     branches = data::branches(input, data::default_band(input));
@@ -37,14 +37,15 @@ std::optional<std::string> butterfly(std::span<const double> input,
   for (const auto& branch : branches) {
     const auto y = output.subspan(branch.first, branch.samples());
     const auto [lowest, highest] = std::minmax_element(y.begin(), y.end());
-    const double beyond = std::max(*highest - std::max(y.front(), y.back()),
-                                   std::min(y.front(), y.back()) - *lowest);
+    const double beyond =
+        std::max(*highest - std::max(y.front(), y.back()), std::min(y.front(), y.back()) - *lowest);
     if (beyond > kTurnBack * output_range) ++turning;
   }
   if (turning < 2 || 2 * turning < branches.size()) return std::nullopt;
-  return fmt::format("butterfly: the output turns back on {} of {} input branches (non-monotone "
-                     "output vs. input)",
-                     turning, branches.size());
+  return fmt::format(
+      "butterfly: the output turns back on {} of {} input branches (non-monotone "
+      "output vs. input)",
+      turning, branches.size());
 }
 
 // Slope of the least-squares line through values[i] over i, times (n - 1): the trend's change.
@@ -88,9 +89,10 @@ std::optional<std::string> drift(std::span<const double> input, std::span<const 
     }
   }
   if (!(std::abs(change) > kDrift * output_range)) return std::nullopt;
-  return fmt::format("drift: at the repeated input value {:.4g} the output trends by {:.4g} "
-                     "({:.0f} % of the output range) over {} crossings",
-                     level, change, 100.0 * std::abs(change) / output_range, crossings);
+  return fmt::format(
+      "drift: at the repeated input value {:.4g} the output trends by {:.4g} "
+      "({:.0f} % of the output range) over {} crossings",
+      level, change, 100.0 * std::abs(change) / output_range, crossings);
 }
 
 std::optional<std::string> extrapolation(std::span<const double> fit_input,
@@ -99,9 +101,10 @@ std::optional<std::string> extrapolation(std::span<const double> fit_input,
   const auto [held_low, held_high] = std::minmax_element(held_input.begin(), held_input.end());
   const double margin = kOutOfRange * (*fit_high - *fit_low);
   if (!(*held_low < *fit_low - margin || *held_high > *fit_high + margin)) return std::nullopt;
-  return fmt::format("extrapolation: the held-out input spans {:.4g}..{:.4g}, beyond the fitted "
-                     "input range {:.4g}..{:.4g}",
-                     *held_low, *held_high, *fit_low, *fit_high);
+  return fmt::format(
+      "extrapolation: the held-out input spans {:.4g}..{:.4g}, beyond the fitted "
+      "input range {:.4g}..{:.4g}",
+      *held_low, *held_high, *fit_low, *fit_high);
 }
 
 }  // namespace
@@ -111,10 +114,11 @@ RecordDiagnosis diagnose_record(std::span<const double> input, std::span<const d
   require_same_size(input.size(), "input", output.size(), "output");
   if (split.validation_end > input.size() || split.fit_end > input.size() ||
       split.fit_size() == 0) {
-    throw Error(fmt::format("record diagnosis: the split (fit {}..{}, held out {}..{}) lies "
-                            "outside the {} samples",
-                            split.fit_begin, split.fit_end, split.validation_begin,
-                            split.validation_end, input.size()));
+    throw Error(
+        fmt::format("record diagnosis: the split (fit {}..{}, held out {}..{}) lies "
+                    "outside the {} samples",
+                    split.fit_begin, split.fit_end, split.validation_begin, split.validation_end,
+                    input.size()));
   }
   RecordDiagnosis diagnosis;
   const double output_range = range_of(output);

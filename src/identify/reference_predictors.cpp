@@ -5,8 +5,8 @@
 #include <exception>
 #include <numeric>
 
-#include <Eigen/Dense>
 #include <fmt/format.h>
+#include <Eigen/Dense>
 
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
@@ -57,9 +57,10 @@ std::vector<double> predict_polynomial(std::span<const double> fit_input,
   require_same_size(fit_input.size(), "fit_input", fit_output.size(), "fit_output");
   const std::size_t coefficients = degree + 1;
   if (fit_input.size() < coefficients) {
-    throw Error(fmt::format("polynomial of degree {}: {} fit samples, fewer than its {} "
-                            "coefficients",
-                            degree, fit_input.size(), coefficients));
+    throw Error(
+        fmt::format("polynomial of degree {}: {} fit samples, fewer than its {} "
+                    "coefficients",
+                    degree, fit_input.size(), coefficients));
   }
   const auto [lowest, highest] = std::minmax_element(fit_input.begin(), fit_input.end());
   if (!(*highest > *lowest)) throw Error("polynomial y(v): the fit part's input is constant");
@@ -96,9 +97,10 @@ ArxCoefficients fit_arx(std::span<const double> fit_input, std::span<const doubl
   const std::size_t first = std::max(na, nb - 1);  // first sample with a full history
   const std::size_t coefficients = na + nb + 1;
   if (fit_input.size() < first + coefficients) {
-    throw Error(fmt::format("ARX({},{}): {} fit samples give fewer equations than its {} "
-                            "coefficients",
-                            na, nb, fit_input.size(), coefficients));
+    throw Error(
+        fmt::format("ARX({},{}): {} fit samples give fewer equations than its {} "
+                    "coefficients",
+                    na, nb, fit_input.size(), coefficients));
   }
   const Scaling v = scaling_of(fit_input);
   const Scaling y = scaling_of(fit_output);
@@ -138,14 +140,13 @@ std::vector<double> simulate_arx(const ArxCoefficients& arx, std::span<const dou
   const std::size_t na = arx.a.size();
   const std::size_t nb = arx.b.size();
   if (fit_input.size() < std::max(na, nb)) {
-    throw Error(fmt::format("ARX({},{}): a fit part of {} samples is shorter than the history",
-                            na, nb, fit_input.size()));
+    throw Error(fmt::format("ARX({},{}): a fit part of {} samples is shorter than the history", na,
+                            nb, fit_input.size()));
   }
   // The record as one sequence: the fit part's tail, then the free-run part.
   const std::size_t history = std::max(na, nb);
   std::vector<double> v(fit_input.end() - static_cast<std::ptrdiff_t>(history), fit_input.end());
-  std::vector<double> y(fit_output.end() - static_cast<std::ptrdiff_t>(history),
-                        fit_output.end());
+  std::vector<double> y(fit_output.end() - static_cast<std::ptrdiff_t>(history), fit_output.end());
   v.insert(v.end(), held_input.begin(), held_input.end());
   y.resize(v.size());
   for (std::size_t k = history; k < v.size(); ++k) {
@@ -166,10 +167,11 @@ std::vector<ReferenceScore> reference_predictions(std::span<const double> input,
   require_same_size(input.size(), "input", output.size(), "output");
   if (!split.has_validation() || split.fit_size() == 0 || split.validation_end > input.size() ||
       split.fit_end > split.validation_begin) {
-    throw Error(fmt::format("reference predictors: the split (fit {}..{}, held out {}..{}) needs "
-                            "a fit part and a held-out part within the {} samples",
-                            split.fit_begin, split.fit_end, split.validation_begin,
-                            split.validation_end, input.size()));
+    throw Error(
+        fmt::format("reference predictors: the split (fit {}..{}, held out {}..{}) needs "
+                    "a fit part and a held-out part within the {} samples",
+                    split.fit_begin, split.fit_end, split.validation_begin, split.validation_end,
+                    input.size()));
   }
   const auto fit_input = input.subspan(split.fit_begin, split.fit_size());
   const auto fit_output = output.subspan(split.fit_begin, split.fit_size());

@@ -57,8 +57,8 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
     ReferenceOptions options;
     options.time_series = request.preprocessing.resample == data::ResampleMethod::none;
     if (held_out_part) {
-      report.references = reference_predictions(
-          records.input, records.output, {0, held_begin, held_begin, samples}, options);
+      report.references = reference_predictions(records.input, records.output,
+                                                {0, held_begin, held_begin, samples}, options);
     } else if (!records.validation_input.empty()) {
       // A separate record does not continue the fit record: the static references only, and
       // "last value held" holds the fit record's last output.

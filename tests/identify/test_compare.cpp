@@ -56,7 +56,8 @@ TEST(CompareModels, PiRecordRanksPiFirst) {
   EXPECT_EQ(comparison.ranking.front().model, "pi");
   EXPECT_LT(comparison.ranking.front().validation.nrmse_percent, 1e-7);
   EXPECT_EQ(comparison.ranking.front().parameters, 5u);  // 4 weights and the offset
-  EXPECT_LE(comparison.ranking[1].validation.nrmse_percent, comparison.ranking[2].validation.nrmse_percent);
+  EXPECT_LE(comparison.ranking[1].validation.nrmse_percent,
+            comparison.ranking[2].validation.nrmse_percent);
 }
 
 TEST(CompareModels, BoucWenRecordRanksBoucWenFirst) {
@@ -148,8 +149,7 @@ TEST(CompareModels, LongHoldAtTheEndIsWonByTheHeldValue) {
   }
   EXPECT_NE(markdown.find("Best reference: last value held"), std::string::npos);
   EXPECT_NE(markdown.find("Models that do not beat it: "), std::string::npos);
-  EXPECT_NE(markdown.find("| 1 | " + comparison.ranking.front().model + " | "),
-            std::string::npos);
+  EXPECT_NE(markdown.find("| 1 | " + comparison.ranking.front().model + " | "), std::string::npos);
   const auto csv = model_comparison_csv(comparison);
   EXPECT_NE(csv.find("\nreference,\"reference: last value held\",reference,"), std::string::npos)
       << csv;

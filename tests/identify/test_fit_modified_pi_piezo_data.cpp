@@ -65,8 +65,7 @@ TEST(FitModifiedPiPiezoData, AsymmetricMapVersusClassicalPi) {
     pi_errors.push_back(error_metrics(record.displacement, pi_prediction).nrmse_percent);
     mpi_errors.push_back(error_metrics(record.displacement, mpi_prediction).nrmse_percent);
     std::printf("| %s | %s | %.2f %% | %.2f %% |\n", record.name.c_str(),
-                &record == &fitted ? "fit" : "validation", pi_errors.back(),
-                mpi_errors.back());
+                &record == &fitted ? "fit" : "validation", pi_errors.back(), mpi_errors.back());
   }
   std::printf("\nPI: %s\nmodified PI: %s\n", pi.report.brief().c_str(), mpi.report.brief().c_str());
   // The PI fit of docs/results.md (3.66 % NRMSE with the fitted offset) is reproduced, and the

@@ -105,14 +105,16 @@ TEST(FitReport, StatusAndYardstickAreStated) {
   ReferenceScore mean{"mean", ErrorMetrics{1604, 50.0, 9.0, 90.0}, "", {}};
   report.references = {mean, held};
   const auto brief = report.brief();
-  EXPECT_TRUE(contains(brief, "pi fitted by nnls (Lawson-Hanson): degenerate (the method: "
-                              "converged; the held-out prediction is nearly constant) after 17"))
+  EXPECT_TRUE(contains(brief,
+                       "pi fitted by nnls (Lawson-Hanson): degenerate (the method: "
+                       "converged; the held-out prediction is nearly constant) after 17"))
       << brief;
   EXPECT_FALSE(contains(brief, ": converged after")) << brief;
   // 2 % against the held value's 1.5 %: the model does not beat the yardstick.
   EXPECT_EQ(report.beats_yardstick(), false);
-  EXPECT_TRUE(contains(brief, "the best reference predictor on the held-out part is 'last value "
-                              "held' with NRMSE 1.5 %; the model does not beat it."))
+  EXPECT_TRUE(contains(brief,
+                       "the best reference predictor on the held-out part is 'last value "
+                       "held' with NRMSE 1.5 %; the model does not beat it."))
       << brief;
   const auto full = report.full();
   EXPECT_TRUE(contains(full, "status                    degenerate")) << full;

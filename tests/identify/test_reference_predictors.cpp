@@ -32,12 +32,12 @@ TEST(ReferencePredictors, PolynomialRecoversACubic) {
   ASSERT_EQ(predicted.size(), held_input.size());
   for (std::size_t k = 0; k < held_input.size(); ++k)
     EXPECT_NEAR(predicted[k], cubic(held_input[k]), 1e-9) << held_input[k];
-  EXPECT_HYST_ERROR(predict_polynomial(std::vector<double>{1, 2, 3}, std::vector<double>{1, 2, 3},
-                                       held_input, 3),
-                    "fewer than its 4 coefficients");
-  EXPECT_HYST_ERROR(predict_polynomial(std::vector<double>(5, 1.0), std::vector<double>(5, 1.0),
-                                       held_input, 3),
-                    "input is constant");
+  EXPECT_HYST_ERROR(
+      predict_polynomial(std::vector<double>{1, 2, 3}, std::vector<double>{1, 2, 3}, held_input, 3),
+      "fewer than its 4 coefficients");
+  EXPECT_HYST_ERROR(
+      predict_polynomial(std::vector<double>(5, 1.0), std::vector<double>(5, 1.0), held_input, 3),
+      "input is constant");
 }
 
 TEST(ReferencePredictors, ArxRecoversAKnownLinearSystem) {

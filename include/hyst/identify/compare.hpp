@@ -73,7 +73,7 @@ struct ComparedModel {
 
 struct ModelComparison {
   DataSplit split;
-  std::vector<ComparedModel> ranking;  //!< best first; failed rows last
+  std::vector<ComparedModel> ranking;      //!< best first; failed rows last
   std::vector<ReferenceScore> references;  //!< the yardstick, on the same held-out part
   double no_fit_percent = 20.0;            //!< the threshold of the no-fit verdict [%]
   //! Set when the best model's held-out NRMSE exceeds no_fit_percent: what the record shows.

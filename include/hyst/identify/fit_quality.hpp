@@ -39,7 +39,7 @@ struct QualityVerdict {
 //! Judges `simulated` against `measured` (same length, the whole record) as the file comment
 //! says; the degeneracy is judged on the samples from `judged_begin` on. Throws hyst::Error when
 //! the lengths differ, the record is empty or judged_begin is not a sample of it.
-QualityVerdict judge_simulation(std::span<const double> measured,
-                                std::span<const double> simulated, std::size_t judged_begin = 0);
+QualityVerdict judge_simulation(std::span<const double> measured, std::span<const double> simulated,
+                                std::size_t judged_begin = 0);
 
 }  // namespace hyst

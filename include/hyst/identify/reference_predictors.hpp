@@ -30,7 +30,7 @@ namespace hyst {
 
 //! One reference predictor scored on held-out samples.
 struct ReferenceScore {
-  std::string name;                       //!< "mean", "last value held", ...
+  std::string name;                        //!< "mean", "last value held", ...
   std::optional<ErrorMetrics> validation;  //!< empty when the predictor could not be made
   std::string error;                       //!< why not, when validation is empty
   std::vector<double> predicted;           //!< on the held-out part (empty when it failed)
