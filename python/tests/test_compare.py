@@ -45,6 +45,8 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     # The yardstick: the exact PI beats every reference predictor; no no-fit verdict.
     names = [reference.name for reference in comparison.references]
     assert names == ["mean", "last value held", "polynomial y(v), degree 3", "ARX(2,2)"]
+    assert isinstance(comparison.references[0], hyst.ReferenceScore)
+    assert best.report.quality_note == ""
     assert best.beats_yardstick and best.report.status in ("converged", "iteration limit")
     assert comparison.yardstick.startswith("Yardstick (reference predictors")
     assert comparison.no_fit == "" and comparison.no_fit_percent == 20.0

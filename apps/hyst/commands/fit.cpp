@@ -254,10 +254,6 @@ void run(const FitOptions& options) {
     warn(fmt::format("the fit is not converged ({}): {}", report.status(),
                      report.quality_note.empty() ? report.message : report.quality_note));
   }
-  if (report.beats_yardstick() == false) {
-    warn(fmt::format("the model does not beat the reference predictor '{}' on the held-out part",
-                     report.best_reference()->name));
-  }
 }
 
 }  // namespace
