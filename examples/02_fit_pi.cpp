@@ -38,7 +38,7 @@ int main() {
 
   std::printf("| record | part | RMSE [nm] | NRMSE | max error [nm] |\n|---|---|---|---|---|\n");
   const auto row = [](const char* record, const char* part, const hyst::ErrorMetrics& m) {
-    std::printf("| %s | %s | %.1f | %.2f %% | %.1f |\n", record, part, m.rmse, 100 * m.nrmse,
+    std::printf("| %s | %s | %.1f | %.2f %% | %.1f |\n", record, part, m.rmse, m.nrmse_percent,
                 m.max_error);
   };
   row("15kv", "fit", fit.report.fit);

@@ -58,5 +58,5 @@ int main() {
       "IGPI feedforward: max |GPI[IGPI[x_d]] - x_d| = %.3g nm over %zu samples, %zu "
       "saturated\n",
       worst, desired.size(), report.saturated_samples);
-  return fit.report.fit.nrmse < 0.05 && report.ok() && worst < 1e-6 * half_range ? 0 : 1;
+  return fit.report.fit.nrmse_percent < 5 && report.ok() && worst < 1e-6 * half_range ? 0 : 1;
 }

@@ -76,6 +76,6 @@ int main() {
       std::abs(loop.coercive.front().value - instrument("Vc+ [V]")) < 0.01;
   const bool ok = cycles.size() == 1 && figures_agree &&
                   outcome.report.termination == hyst::Termination::converged &&
-                  outcome.report.preprocessing.size() == 2 && outcome.report.fit.nrmse < 0.05;
+                  outcome.report.preprocessing.size() == 2 && outcome.report.fit.nrmse_percent < 5;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -58,5 +58,5 @@ print(report.brief())
 ok = (len(cycles) == 1 and abs(loop.area - wloss) < 1e-4 * loop.area
       and abs(loop.coercive[0].value - vc_plus) < 0.01
       and report.termination == hyst.Termination.converged
-      and len(report.preprocessing) == 2 and report.fit.nrmse < 0.05)
+      and len(report.preprocessing) == 2 and report.fit.nrmse_percent < 5)
 sys.exit(0 if ok else 1)

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
           amplitude = std::max(amplitude, std::abs(value));
         std::printf("| %s | %s | %zu of %zu, %.0f A/m | %s | %.2f %% | %s |\n", material.c_str(),
                     std::string(hyst::to_string(variant)).c_str(), j + 1, h.size(), amplitude,
-                    j + 1 == h.size() ? "fit" : "predicted", 100.0 * metrics.nrmse,
+                    j + 1 == h.size() ? "fit" : "predicted", metrics.nrmse_percent,
                     j + 1 == h.size() ? fmt_status(fit.report).c_str() : "");
       }
       const auto& p = fit.model.params();

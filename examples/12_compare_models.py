@@ -24,7 +24,7 @@ comparison = hyst.compare(v, y, ["pi", "bouc_wen", "narx"],
                           options={"narx": {"hidden_sizes": [6], "max_iterations": 30}})
 print(comparison.markdown())
 best = comparison.ranking[0]
-print(f"best: {best.model} (validation NRMSE {best.validation.nrmse:.3g})")
+print(f"best: {best.model} (validation NRMSE {best.validation.nrmse_percent:.3g})")
 
 # The NARX model alone: fitted by name, saved and simulated like every model.
 narx, report = hyst.fit("narx", v[:1200], y[:1200], v[1200:], y[1200:], hidden_sizes=[6],

@@ -65,7 +65,7 @@ std::vector<double> predict(const hyst::PrandtlIshlinskii& model,
 std::string fit_section(const fs::path& folder, const std::vector<Record>& records,
                         const hyst::PiFit& fit, std::size_t fitted) {
   std::string table =
-      "| record | role | RMSE [nm] | NRMSE | max error [nm] |\n|---|---|---:|---:|---:|\n";
+      "| record | role | RMSE [nm] | NRMSE [%] | max error [nm] |\n|---|---|---:|---:|---:|\n";
   hyst::plot::Figure loops{
       "PI model vs measured piezo loops", "voltage [V]", "displacement [nm]", {}};
   // One colour per amplitude: measured as points, the model's prediction as a line.
@@ -74,8 +74,8 @@ std::string fit_section(const fs::path& folder, const std::vector<Record>& recor
     const auto& record = records[i];
     const auto predicted = predict(fit.model, record.voltage);
     const auto metrics = hyst::error_metrics(record.displacement, predicted);
-    table += fmt::format("| {} | {} | {:.2f} | {:.4f} | {:.2f} |\n", record.label,
-                         i == fitted ? "fit" : "validation", metrics.rmse, metrics.nrmse,
+    table += fmt::format("| {} | {} | {:.2f} | {:.2f} | {:.2f} |\n", record.label,
+                         i == fitted ? "fit" : "validation", metrics.rmse, metrics.nrmse_percent,
                          metrics.max_error);
     loops.series.push_back({"measured " + record.label, record.voltage, record.displacement,
                             hyst::plot::Series::Style::points, colours[i % colours.size()]});

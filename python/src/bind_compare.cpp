@@ -23,6 +23,8 @@ void bind_compare(py::module_& module) {
       .def_readonly("report", &ComparedModel::report, "The fitter's FitReport, or None.")
       .def_readonly("validation", &ComparedModel::validation,
                     "ErrorMetrics of the free run on the held-out part.")
+      .def_readonly("beats_yardstick", &ComparedModel::beats_yardstick,
+                    "True when the validation NRMSE is below the best reference predictor's.")
       .def_readonly("parameters", &ComparedModel::parameters)
       .def_readonly("fit_seconds", &ComparedModel::fit_seconds)
       .def_readonly("ns_per_sample", &ComparedModel::ns_per_sample)
@@ -30,8 +32,8 @@ void bind_compare(py::module_& module) {
           "simulated", [](const ComparedModel& row) { return readonly_copy(row.simulated); },
           "Free run over the whole record (empty when the model failed).")
       .def("__repr__", [](const ComparedModel& row) {
-        return row.ok ? fmt::format("ComparedModel(model='{}', nrmse={:.4g})", row.model,
-                                    row.validation.nrmse)
+        return row.ok ? fmt::format("ComparedModel(model='{}', nrmse_percent={:.4g})", row.model,
+                                    row.validation.nrmse_percent)
                       : fmt::format("ComparedModel(model='{}', failed)", row.model);
       });
 
@@ -39,6 +41,16 @@ void bind_compare(py::module_& module) {
                               "Models fitted to one record, ranked on its held-out part.")
       .def_readonly("split", &ModelComparison::split)
       .def_readonly("ranking", &ModelComparison::ranking, "Best first; failed models last.")
+      .def_readonly("references", &ModelComparison::references,
+                    "The yardstick: ReferenceScore of each reference predictor.")
+      .def_readonly("no_fit_percent", &ModelComparison::no_fit_percent,
+                    "Threshold of the no-fit verdict [%].")
+      .def_property_readonly(
+          "no_fit", [](const ModelComparison& comparison) { return no_fit_line(comparison); },
+          "The no-fit verdict in one line, or '' when the best model is below the threshold.")
+      .def_property_readonly(
+          "yardstick", [](const ModelComparison& comparison) { return yardstick_line(comparison); },
+          "One line: every reference predictor's held-out NRMSE and the best of them.")
       .def("markdown", &model_comparison_markdown, "The ranking as a Markdown table.")
       .def("csv", &model_comparison_csv, "The ranking as CSV text.")
       .def(
@@ -64,11 +76,12 @@ void bind_compare(py::module_& module) {
       "compare",
       [](const InputArray& input, const InputArray& output,
          const std::optional<std::vector<std::string>>& models, double validate_fraction,
-         const std::optional<py::dict>& options, double timing_seconds) {
+         const std::optional<py::dict>& options, double timing_seconds, double no_fit_percent) {
         CompareOptions compare;
         if (models) compare.models = *models;
         compare.validate_fraction = validate_fraction;
         compare.timing_seconds = timing_seconds;
+        compare.no_fit_percent = no_fit_percent;
         if (options) {
           for (const auto& [name, value] : *options) {
             const auto model = py::cast<std::string>(name);
@@ -81,7 +94,7 @@ void bind_compare(py::module_& module) {
         return compare_models(v, y, compare);
       },
       "input"_a, "output"_a, "models"_a = py::none(), py::kw_only(), "validate_fraction"_a = 0.25,
-      "options"_a = py::none(), "timing_seconds"_a = 0.05,
+      "options"_a = py::none(), "timing_seconds"_a = 0.05, "no_fit_percent"_a = 20.0,
       "Fits the models (default: every model with a fitter) to the first part of the record, "
       "runs each in free run over the whole record and ranks them by NRMSE on the held-out last "
       "part. options: {model name: {fit option: value}}. A model whose fit fails gets a row "

@@ -15,15 +15,15 @@ namespace hyst::python {
 namespace {
 
 std::string metrics_repr(const ErrorMetrics& m) {
-  return fmt::format("ErrorMetrics(samples={}, rmse={:.6g}, nrmse={:.6g}, max_error={:.6g})",
-                     m.samples, m.rmse, m.nrmse, m.max_error);
+  return fmt::format(
+      "ErrorMetrics(samples={}, rmse={:.6g}, nrmse_percent={:.6g}, max_error={:.6g})", m.samples,
+      m.rmse, m.nrmse_percent, m.max_error);
 }
 
 std::string report_repr(const FitReport& r) {
-  std::string text =
-      fmt::format("<FitReport {} by {}: {} after {} iterations; fit NRMSE {:.4g} %", r.model,
-                  r.method, to_string(r.termination), r.iterations, 100.0 * r.fit.nrmse);
-  if (r.validation) text += fmt::format("; validation NRMSE {:.4g} %", 100.0 * r.validation->nrmse);
+  std::string text = fmt::format("<FitReport {} by {}: {} after {} iterations; fit NRMSE {:.4g} %",
+                                 r.model, r.method, r.status(), r.iterations, r.fit.nrmse_percent);
+  if (r.validation) text += fmt::format("; validation NRMSE {:.4g} %", r.validation->nrmse_percent);
   return text + ">";
 }
 
@@ -41,7 +41,8 @@ void bind_identify(py::module_& module) {
                            "predicted; RMSE, NRMSE = RMSE / range(measured), max |e|.")
       .def_readonly("samples", &ErrorMetrics::samples)
       .def_readonly("rmse", &ErrorMetrics::rmse, "[output units]")
-      .def_readonly("nrmse", &ErrorMetrics::nrmse, "RMSE / range of the measured output [-]")
+      .def_readonly("nrmse_percent", &ErrorMetrics::nrmse_percent,
+                    "100 * RMSE / range of the measured output [%]")
       .def_readonly("max_error", &ErrorMetrics::max_error, "[output units]")
       .def("__repr__", &metrics_repr);
   module.def(
@@ -50,6 +51,17 @@ void bind_identify(py::module_& module) {
         return error_metrics(as_span(measured, "measured"), as_span(predicted, "predicted"));
       },
       "measured"_a, "predicted"_a, "ErrorMetrics of `predicted` against `measured`.");
+
+  py::class_<ReferenceScore>(module, "ReferenceScore",
+                             "A reference predictor scored on held-out samples.")
+      .def_readonly("name", &ReferenceScore::name)
+      .def_readonly("validation", &ReferenceScore::validation, "ErrorMetrics, or None")
+      .def_readonly("error", &ReferenceScore::error, "Why it could not be made")
+      .def("__repr__", [](const ReferenceScore& r) {
+        return r.validation ? fmt::format("ReferenceScore('{}', nrmse_percent={:.4g})", r.name,
+                                          r.validation->nrmse_percent)
+                            : fmt::format("ReferenceScore('{}', not made)", r.name);
+      });
 
   py::class_<FitReport>(module, "FitReport",
                         "Outcome of a fit. str() gives brief(), full() a table of every field.")
@@ -65,6 +77,16 @@ void bind_identify(py::module_& module) {
       .def_readonly("validation", &FitReport::validation,
                     "ErrorMetrics on held-out samples, or None")
       .def_readonly("seconds", &FitReport::seconds, "wall time of the fit [s]")
+      .def_property_readonly(
+          "status", [](const FitReport& r) { return std::string(r.status()); },
+          "converged, iteration limit, no progress, degenerate, unstable or failed")
+      .def_readonly("quality_note", &FitReport::quality_note,
+                    "Why the simulation is degenerate or unstable ('' otherwise)")
+      .def_readonly("references", &FitReport::references,
+                    "Reference predictors scored on the held-out part (the yardstick)")
+      .def_property_readonly(
+          "beats_yardstick", [](const FitReport& r) { return r.beats_yardstick(); },
+          "True/False against the best reference predictor, None without one")
       .def_readonly("preprocessing", &FitReport::preprocessing,
                     "how the record was prepared before fitting, one line per step")
       .def_readonly("validation_rule", &FitReport::validation_rule,

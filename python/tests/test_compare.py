@@ -35,13 +35,21 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     best = comparison.ranking[0]
     assert isinstance(best, hyst.ComparedModel)
     assert best.model == "pi" and best.ok and best.error == ""
-    assert best.validation.nrmse < 1e-9
+    assert best.validation.nrmse_percent < 1e-7
     assert best.parameters == 5 and best.fit_seconds >= 0 and best.ns_per_sample > 0
     assert best.report.model == "pi"
     assert len(best.simulated) == len(v)
     assert repr(best).startswith("ComparedModel(model='pi'")
     assert "| 1 | pi |" in comparison.markdown()
-    assert comparison.csv().startswith("rank,model,status")
+    assert comparison.csv().startswith("rank,model,status,validation_nrmse_percent")
+    # The yardstick: the exact PI beats every reference predictor; no no-fit verdict.
+    names = [reference.name for reference in comparison.references]
+    assert names == ["mean", "last value held", "polynomial y(v), degree 3", "ARX(2,2)"]
+    assert isinstance(comparison.references[0], hyst.ReferenceScore)
+    assert best.report.quality_note == ""
+    assert best.beats_yardstick and best.report.status in ("converged", "iteration limit")
+    assert comparison.yardstick.startswith("Yardstick (reference predictors")
+    assert comparison.no_fit == "" and comparison.no_fit_percent == 20.0
     page = comparison.html(v, y, title="PI & NARX")
     assert "<h1>PI &amp; NARX</h1>" in page and page.count("<svg ") == 2
     if shutil.which("gnuplot"):
@@ -72,7 +80,7 @@ def test_narx_fits_simulates_and_round_trips(tmp_path):
     y = np.tanh(1.2 * play) + 0.1 * v
     model, report = hyst.fit("narx", v, y, play_thresholds=[0.4], hidden_sizes=[3],
                              input_lags=0, output_lags=0, max_iterations=40)
-    assert report.model == "narx" and report.fit.nrmse < 0.01
+    assert report.model == "narx" and report.fit.nrmse_percent < 1
     path = tmp_path / "narx.json"
     hyst.save_model(path, model)
     loaded = hyst.load_model(path)

@@ -169,10 +169,10 @@ def test_detrend_reaches_the_validation_record(data_dir):
     by_hand = data.remove_drift(v5, p5, data.default_band(v5)).output
     _, manual = hyst.fit("pi", fit_v, fit_p, v5, by_hand, operators=8)
     assert manual.preprocessing == []
-    assert report.validation.nrmse == pytest.approx(manual.validation.nrmse, rel=1e-12)
-    assert report.fit.nrmse == pytest.approx(manual.fit.nrmse, rel=1e-12)
+    assert report.validation.nrmse_percent == pytest.approx(manual.validation.nrmse_percent, rel=1e-12)
+    assert report.fit.nrmse_percent == pytest.approx(manual.fit.nrmse_percent, rel=1e-12)
     _, raw = hyst.fit("pi", fit_v, fit_p, v5, p5, operators=8)
-    assert raw.validation.nrmse != pytest.approx(manual.validation.nrmse, rel=1e-3)
+    assert raw.validation.nrmse_percent != pytest.approx(manual.validation.nrmse_percent, rel=1e-3)
 
 
 def test_backbone_of_an_ellipse():

@@ -41,7 +41,7 @@ def test_jiles_atherton_fit_recovers_simulated_loop():
     h = 3000.0 * np.sin(2 * np.pi * np.arange(400) / 200.0)
     b = model.simulate(h)
     fitted, report = hyst.fit("jiles_atherton", h, b, variant="venkataraman")
-    assert report.fit.nrmse < 1e-3
+    assert report.fit.nrmse_percent < 0.1
     assert fitted.params["variant"] == "venkataraman"
 
 
@@ -53,7 +53,7 @@ def test_bouc_wen_oscillator_has_no_inverse_and_fits_by_name():
     u = 40 * np.sin(2 * np.pi * 12 * t) + 25 * np.sin(2 * np.pi * 31 * t + 1)
     y = model.simulate(u)
     fitted, report = hyst.fit("bouc_wen_oscillator", u, y, max_iterations=40)
-    assert report.fit.nrmse < 0.005
+    assert report.fit.nrmse_percent < 0.5
     assert fitted.params["mass"] == pytest.approx(2.0, rel=0.05)
 
 

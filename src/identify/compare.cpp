@@ -89,6 +89,14 @@ ComparedModel compare_one(const ModelEntry& entry, std::span<const double> input
     row.simulated.resize(input.size());
     auto model = outcome.model->clone();
     model->simulate(input, row.simulated);
+    // The free run judged where the ranking is made: on the held-out part.
+    const auto verdict = judge_simulation(output, row.simulated, split.validation_begin);
+    row.report->quality = verdict.quality;
+    row.report->quality_note = verdict.reason;
+    if (!std::all_of(row.simulated.begin(), row.simulated.end(),
+                     [](double y) { return std::isfinite(y); })) {
+      throw Error(fmt::format("unstable: {}", verdict.reason));
+    }
     const auto held_out = std::span<const double>(row.simulated)
                               .subspan(split.validation_begin, split.validation_size());
     row.validation =
@@ -123,7 +131,16 @@ std::string markdown_cell(std::string_view text) {
 
 std::string status_of(const ComparedModel& row) {
   if (!row.ok) return "failed";
-  return std::string(to_string(row.report->termination));
+  return std::string(row.report->status());
+}
+
+std::string_view yes_no(bool value) {
+  return value ? "yes" : "no";
+}
+
+const ComparedModel* best_model(const ModelComparison& comparison) {
+  const bool any = !comparison.ranking.empty() && comparison.ranking.front().ok;
+  return any ? &comparison.ranking.front() : nullptr;
 }
 
 }  // namespace
@@ -141,6 +158,11 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
         fmt::format("compare: timing_seconds = {} must be finite and >= 0", options.timing_seconds),
         "timing_seconds");
   }
+  if (!(options.no_fit_percent > 0.0) || !std::isfinite(options.no_fit_percent)) {
+    throw Error(
+        fmt::format("compare: no_fit_percent = {} must be finite and > 0", options.no_fit_percent),
+        "no_fit_percent");
+  }
   if (input.size() < 2) {
     throw Error(fmt::format("compare: {} samples; a fit part and a validation part need at least "
                             "2",
@@ -155,9 +177,66 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
   std::stable_sort(comparison.ranking.begin(), comparison.ranking.end(),
                    [](const ComparedModel& a, const ComparedModel& b) {
                      if (a.ok != b.ok) return a.ok;
-                     return a.ok && a.validation.nrmse < b.validation.nrmse;
+                     return a.ok && a.validation.nrmse_percent < b.validation.nrmse_percent;
                    });
+  // The yardstick; data the references cannot use (NaN, a constant output) leaves it empty, and
+  // every model then failed on the same data.
+  try {
+    ReferenceOptions reference;
+    reference.time_series = options.time_series;
+    comparison.references = reference_predictions(input, output, comparison.split, reference);
+  } catch (const Error&) {
+    comparison.references.clear();
+  }
+  const auto* yardstick = best_reference(comparison.references);
+  for (auto& row : comparison.ranking) {
+    row.beats_yardstick =
+        row.ok && (yardstick == nullptr ||
+                   row.validation.nrmse_percent < yardstick->validation->nrmse_percent);
+  }
+  comparison.no_fit_percent = options.no_fit_percent;
+  if (const auto* best = best_model(comparison);
+      best != nullptr && best->validation.nrmse_percent > options.no_fit_percent) {
+    comparison.no_fit = diagnose_record(input, output, comparison.split);
+  }
   return comparison;
+}
+
+std::string yardstick_line(const ModelComparison& comparison) {
+  const auto* best = best_reference(comparison.references);
+  if (best == nullptr) return "Yardstick: no reference predictor could be made on this record.";
+  std::string scores;
+  for (const auto& reference : comparison.references) {
+    if (!scores.empty()) scores += ", ";
+    scores += reference.validation
+                  ? fmt::format("{} {:.4g} %", reference.name, reference.validation->nrmse_percent)
+                  : fmt::format("{} not made ({})", reference.name, reference.error);
+  }
+  std::string losers;
+  for (const auto& row : comparison.ranking) {
+    if (row.ok && !row.beats_yardstick) losers += (losers.empty() ? "" : ", ") + row.model;
+  }
+  return fmt::format(
+      "Yardstick (reference predictors fitted on the fit part, NRMSE on the held-out part): {}. "
+      "Best reference: {}, NRMSE {:.4g} %. {}",
+      scores, best->name, best->validation->nrmse_percent,
+      losers.empty() ? std::string("Every fitted model beats it.")
+                     : fmt::format("Models that do not beat it: {}.", losers));
+}
+
+std::string no_fit_line(const ModelComparison& comparison) {
+  const auto* best = best_model(comparison);
+  if (!comparison.no_fit || best == nullptr) return "";
+  std::string seen;
+  for (const auto& finding : comparison.no_fit->findings)
+    seen += (seen.empty() ? "" : "; ") + finding;
+  return fmt::format(
+      "No model describes this record: the best held-out NRMSE is {:.4g} % ({}), above {:g} %. "
+      "{}",
+      best->validation.nrmse_percent, best->model, comparison.no_fit_percent,
+      seen.empty() ? std::string("None of the looks at the data (butterfly, drift, "
+                                 "extrapolation) finds the cause.")
+                   : fmt::format("Seen: {}.", seen));
 }
 
 std::string model_comparison_markdown(const ModelComparison& comparison) {
@@ -165,19 +244,22 @@ std::string model_comparison_markdown(const ModelComparison& comparison) {
       "Fit on samples {}..{}, ranked by free-run error on the held-out samples {}..{}.\n\n",
       comparison.split.fit_begin, comparison.split.fit_end - 1, comparison.split.validation_begin,
       comparison.split.validation_end - 1);
+  if (const auto verdict = no_fit_line(comparison); !verdict.empty()) text += verdict + "\n\n";
+  text += yardstick_line(comparison) + "\n\n";
   text +=
-      "| rank | model | validation NRMSE | validation RMSE | max error | parameters | fit time [s] "
-      "| simulation [ns/sample] | status |\n"
-      "|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+      "| rank | model | validation NRMSE [%] | validation RMSE | max error | beats yardstick | "
+      "parameters | fit time [s] | simulation [ns/sample] | status |\n"
+      "|---:|---|---:|---:|---:|---|---:|---:|---:|---|\n";
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {} | {:.3g} | {:.3g} | {} |\n",
-                          ++rank, row.model, row.validation.nrmse, row.validation.rmse,
-                          row.validation.max_error, row.parameters, row.fit_seconds,
-                          row.ns_per_sample, status_of(row));
+      text +=
+          fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {} | {} | {:.3g} | {:.3g} | {} |\n",
+                      ++rank, row.model, row.validation.nrmse_percent, row.validation.rmse,
+                      row.validation.max_error, yes_no(row.beats_yardstick), row.parameters,
+                      row.fit_seconds, row.ns_per_sample, status_of(row));
     } else {
-      text += fmt::format("| - | {} | - | - | - | - | - | - | failed: {} |\n", row.model,
+      text += fmt::format("| - | {} | - | - | - | - | - | - | - | failed: {} |\n", row.model,
                           markdown_cell(row.error));
     }
   }
@@ -186,17 +268,31 @@ std::string model_comparison_markdown(const ModelComparison& comparison) {
 
 std::string model_comparison_csv(const ModelComparison& comparison) {
   std::string text =
-      "rank,model,status,validation_nrmse,validation_rmse,validation_max_error,parameters,"
-      "fit_seconds,simulation_ns_per_sample,message\n";
+      "rank,model,status,validation_nrmse_percent,validation_rmse,validation_max_error,"
+      "beats_yardstick,parameters,fit_seconds,simulation_ns_per_sample,message\n";
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format("{},{},{},{:.8g},{:.8g},{:.8g},{},{:.6g},{:.6g},{}\n", ++rank, row.model,
-                          status_of(row), row.validation.nrmse, row.validation.rmse,
-                          row.validation.max_error, row.parameters, row.fit_seconds,
-                          row.ns_per_sample, csv_quoted(row.report->message));
+      text +=
+          fmt::format("{},{},{},{:.8g},{:.8g},{:.8g},{},{},{:.6g},{:.6g},{}\n", ++rank, row.model,
+                      status_of(row), row.validation.nrmse_percent, row.validation.rmse,
+                      row.validation.max_error, yes_no(row.beats_yardstick), row.parameters,
+                      row.fit_seconds, row.ns_per_sample,
+                      csv_quoted(row.report->quality_note.empty() ? row.report->message
+                                                                  : row.report->quality_note));
     } else {
-      text += fmt::format("-,{},failed,,,,,,,{}\n", row.model, csv_quoted(row.error));
+      text += fmt::format("-,{},failed,,,,,,,,{}\n", row.model, csv_quoted(row.error));
+    }
+  }
+  for (const auto& reference : comparison.references) {
+    if (reference.validation) {
+      text += fmt::format("reference,{},reference,{:.8g},{:.8g},{:.8g},,,,,\n",
+                          csv_quoted("reference: " + reference.name),
+                          reference.validation->nrmse_percent, reference.validation->rmse,
+                          reference.validation->max_error);
+    } else {
+      text += fmt::format("reference,{},failed,,,,,,,,{}\n",
+                          csv_quoted("reference: " + reference.name), csv_quoted(reference.error));
     }
   }
   return text;

@@ -616,7 +616,7 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
     report.termination = Termination::failed;
     report.message = "the fitted model diverges in free run on the fit part";
     report.fit.samples = input.size();
-    report.fit.rmse = report.fit.nrmse = report.fit.max_error =
+    report.fit.rmse = report.fit.nrmse_percent = report.fit.max_error =
         std::numeric_limits<double>::infinity();
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

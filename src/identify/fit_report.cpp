@@ -23,12 +23,22 @@ constexpr std::array<std::pair<Termination, std::string_view>, 4> kTerminationNa
 
 std::string metrics_sentence(std::string_view part, const ErrorMetrics& metrics) {
   return fmt::format("{}: RMSE {:.4g}, NRMSE {:.4g} %, max error {:.4g} on {} samples.", part,
-                     metrics.rmse, 100.0 * metrics.nrmse, metrics.max_error, metrics.samples);
+                     metrics.rmse, metrics.nrmse_percent, metrics.max_error, metrics.samples);
+}
+
+std::string yardstick_sentence(const FitReport& report) {
+  const auto* best = report.best_reference();
+  if (best == nullptr || !report.validation) return "";
+  return fmt::format(
+      " Yardstick: the best reference predictor on the held-out part is '{}' with NRMSE {:.4g} %; "
+      "the model {} it.",
+      best->name, best->validation->nrmse_percent,
+      *report.beats_yardstick() ? "beats" : "does not beat");
 }
 
 std::string metrics_row(std::string_view part, const ErrorMetrics& metrics) {
   return fmt::format("  {:<12}{:>10}{:>14.4g}{:>12.4g}{:>14.4g}\n", part, metrics.samples,
-                     metrics.rmse, 100.0 * metrics.nrmse, metrics.max_error);
+                     metrics.rmse, metrics.nrmse_percent, metrics.max_error);
 }
 
 }  // namespace
@@ -49,44 +59,43 @@ Termination termination_from_string(std::string_view text) {
       text));
 }
 
-ErrorMetrics error_metrics(std::span<const double> measured, std::span<const double> predicted) {
-  require_same_size(measured.size(), "measured", predicted.size(), "predicted");
-  require_not_empty(measured.size(), "measured");
-  require_finite(measured, "measured");
-  require_finite(predicted, "predicted");
-  const auto [lowest, highest] = std::minmax_element(measured.begin(), measured.end());
-  const double range = *highest - *lowest;
-  if (!(range > 0.0)) {
-    throw Error(fmt::format(
-        "measured is constant (every one of its {} samples = {}): its range normalises the NRMSE "
-        "and must be > 0",
-        measured.size(), *lowest));
+std::string_view FitReport::status() const {
+  if (termination == Termination::failed) return "failed";
+  if (quality == FitQuality::unstable || quality == FitQuality::degenerate) {
+    return to_string(quality);
   }
-  double sum_of_squares = 0.0;
-  double max_error = 0.0;
-  for (std::size_t k = 0; k < measured.size(); ++k) {
-    const double error = measured[k] - predicted[k];
-    sum_of_squares += error * error;
-    max_error = std::max(max_error, std::abs(error));
+  switch (termination) {
+    case Termination::max_iterations:
+      return "iteration limit";
+    case Termination::no_progress:
+      return "no progress";
+    default:
+      return "converged";
   }
-  ErrorMetrics metrics;
-  metrics.samples = measured.size();
-  metrics.rmse = std::sqrt(sum_of_squares / static_cast<double>(measured.size()));
-  metrics.nrmse = metrics.rmse / range;
-  metrics.max_error = max_error;
-  return metrics;
+}
+
+std::optional<bool> FitReport::beats_yardstick() const {
+  const auto* best = best_reference();
+  if (best == nullptr || !validation) return std::nullopt;
+  return validation->nrmse_percent < best->validation->nrmse_percent;
 }
 
 std::string FitReport::brief() const {
+  // The method's own ending is named too when the status overrules it.
+  const bool overruled = termination != Termination::failed &&
+                         (quality == FitQuality::degenerate || quality == FitQuality::unstable);
   std::string text = fmt::format(
-      "{} fitted by {}: {} after {} iterations in {:.3g} s ({}). Cost 0.5*sum(e^2) {:.6g} -> "
+      "{} fitted by {}: {}{} after {} iterations in {:.3g} s ({}). Cost 0.5*sum(e^2) {:.6g} -> "
       "{:.6g} with {} parameters. {}",
-      model, method, to_string(termination), iterations, seconds, message, initial_cost, final_cost,
-      parameters, metrics_sentence("Fit", fit));
+      model, method, status(),
+      overruled ? fmt::format(" (the method: {}; {})", to_string(termination), quality_note) : "",
+      iterations, seconds, message, initial_cost, final_cost, parameters,
+      metrics_sentence("Fit", fit));
   if (validation) {
     text += fmt::format(" {}", metrics_sentence("Validation", *validation));
     if (!validation_rule.empty()) text += fmt::format(" Validation on the {}.", validation_rule);
   }
+  text += yardstick_sentence(*this);
   if (!preprocessing.empty()) {
     text += fmt::format(" Preprocessing: {}.", fmt::join(preprocessing, "; "));
   }
@@ -101,7 +110,9 @@ std::string FitReport::full() const {
   text += "Fit report\n";
   line("model", model);
   line("method", method);
+  line("status", std::string(status()));
   line("termination", std::string(to_string(termination)));
+  if (!quality_note.empty()) line("simulation", quality_note);
   line("message", message);
   line("iterations", fmt::format("{}", iterations));
   line("parameters", fmt::format("{}", parameters));
@@ -121,6 +132,18 @@ std::string FitReport::full() const {
     text += metrics_row("validation", *validation);
   } else {
     text += fmt::format("  {:<12}{:>10}\n", "validation", "none");
+  }
+  if (!references.empty()) {
+    text += "\n  Yardstick: reference predictors on the held-out part (reference_predictors.hpp)\n";
+    for (const auto& reference : references) {
+      if (reference.validation) {
+        text += fmt::format("  {:<30}{:>10.4g} % NRMSE\n", reference.name,
+                            reference.validation->nrmse_percent);
+      } else {
+        text += fmt::format("  {:<30}not made: {}\n", reference.name, reference.error);
+      }
+    }
+    text += yardstick_sentence(*this).substr(1) + "\n";
   }
   return text;
 }

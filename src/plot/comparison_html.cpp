@@ -64,21 +64,22 @@ std::string page_svg(Figure figure) {
 
 std::string table(const ModelComparison& comparison) {
   std::string html =
-      "<table id=\"ranking\">\n<thead><tr><th>rank</th><th>model</th><th>validation NRMSE</th>"
-      "<th>validation RMSE</th><th>max error</th><th>parameters</th><th>fit time [s]</th>"
-      "<th>simulation [ns/sample]</th><th>status</th></tr></thead>\n<tbody>\n";
+      "<table id=\"ranking\">\n<thead><tr><th>rank</th><th>model</th><th>validation NRMSE "
+      "[%]</th><th>validation RMSE</th><th>max error</th><th>beats yardstick</th>"
+      "<th>parameters</th><th>fit time [s]</th><th>simulation [ns/sample]</th><th>status</th>"
+      "</tr></thead>\n<tbody>\n";
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
       html += fmt::format(
           "<tr class=\"fitted\"><td>{}</td><td>{}</td><td>{:.4g}</td><td>{:.4g}</td><td>{:.4g}"
-          "</td><td>{}</td><td>{:.3g}</td><td>{:.3g}</td><td>{}</td></tr>\n",
-          ++rank, xml_escaped(row.model), row.validation.nrmse, row.validation.rmse,
-          row.validation.max_error, row.parameters, row.fit_seconds, row.ns_per_sample,
-          xml_escaped(to_string(row.report->termination)));
+          "</td><td>{}</td><td>{}</td><td>{:.3g}</td><td>{:.3g}</td><td>{}</td></tr>\n",
+          ++rank, xml_escaped(row.model), row.validation.nrmse_percent, row.validation.rmse,
+          row.validation.max_error, row.beats_yardstick ? "yes" : "no", row.parameters,
+          row.fit_seconds, row.ns_per_sample, xml_escaped(row.report->status()));
     } else {
       html += fmt::format(
-          "<tr class=\"failed\"><td>-</td><td>{}</td><td colspan=\"6\"></td><td>failed: {}</td>"
+          "<tr class=\"failed\"><td>-</td><td>{}</td><td colspan=\"7\"></td><td>failed: {}</td>"
           "</tr>\n",
           xml_escaped(row.model), xml_escaped(row.error));
     }
@@ -101,6 +102,10 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
       "the ranking is by the NRMSE on the held-out samples {3}..{4}.</p>\n",
       xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
       comparison.split.validation_begin, comparison.split.validation_end - 1);
+  if (const auto verdict = no_fit_line(comparison); !verdict.empty()) {
+    html += fmt::format("<p id=\"no-fit\"><strong>{}</strong></p>\n", xml_escaped(verdict));
+  }
+  html += fmt::format("<p id=\"yardstick\">{}</p>\n", xml_escaped(yardstick_line(comparison)));
   html += table(comparison);
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
                                       [](const ComparedModel& row) { return row.ok; });

@@ -1,5 +1,8 @@
-// Fitting through the registry with the preparation of the measured record (hyst/data).
+// Fitting through the registry with the preparation of the measured record (hyst/data), and the
+// judgement of every fit that follows it: the simulation's quality (identify/fit_quality.hpp) and
+// the yardstick of reference predictors (identify/reference_predictors.hpp).
 
+#include <exception>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -8,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/identify/fit_quality.hpp"
+#include "hyst/identify/reference_predictors.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
 
@@ -18,6 +23,58 @@ void add_steps(std::vector<std::string>& report, std::string_view prefix,
                const std::vector<std::string>& steps) {
   for (const auto& step : steps)
     report.push_back(fmt::format("{}{}", prefix, step));
+}
+
+// The records the fitter saw: the fit record (with its held-out part when a fraction is held out)
+// and, when given, the separate validation record.
+struct FittedRecords {
+  std::span<const double> input;
+  std::span<const double> output;
+  std::span<const double> validation_input;
+  std::span<const double> validation_output;
+};
+
+// Judges the fitted model's free run over the fit record (the held-out part, when there is one,
+// for the degeneracy) and scores the reference predictors on the held-out samples. A check that
+// cannot be made leaves the report as the fitter wrote it: the fit itself stands.
+void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitRequest& request) {
+  auto& report = outcome.report;
+  if (report.termination == Termination::failed || !outcome.model) return;
+  const std::size_t samples = records.input.size();
+  const bool held_out_part = records.validation_input.empty() && request.validate_fraction > 0.0 &&
+                             report.validation && report.validation->samples < samples;
+  const std::size_t held_begin = held_out_part ? samples - report.validation->samples : 0;
+  try {
+    std::vector<double> simulated(samples);
+    outcome.model->clone()->simulate(records.input, simulated);
+    const auto verdict = judge_simulation(records.output, simulated, held_begin);
+    report.quality = verdict.quality;
+    report.quality_note = verdict.reason;
+  } catch (const std::exception&) {
+    report.quality = FitQuality::unchecked;  // e.g. a record too short to simulate
+  }
+  try {
+    // The samples of a resampled record are not in time order: no ARX there.
+    ReferenceOptions options;
+    options.time_series = request.preprocessing.resample == data::ResampleMethod::none;
+    if (held_out_part) {
+      report.references = reference_predictions(records.input, records.output,
+                                                {0, held_begin, held_begin, samples}, options);
+    } else if (!records.validation_input.empty()) {
+      // A separate record does not continue the fit record: the static references only, and
+      // "last value held" holds the fit record's last output.
+      std::vector<double> input(records.input.begin(), records.input.end());
+      std::vector<double> output(records.output.begin(), records.output.end());
+      input.insert(input.end(), records.validation_input.begin(), records.validation_input.end());
+      output.insert(output.end(), records.validation_output.begin(),
+                    records.validation_output.end());
+      options.time_series = false;
+      report.references =
+          reference_predictions(input, output, {0, samples, samples, input.size()}, options);
+    }
+  } catch (const std::exception&) {
+    report.references.clear();
+  }
 }
 
 }  // namespace
@@ -59,15 +116,18 @@ FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   }
   auto outcome = entry.fit(fit_request);
   outcome.report.preprocessing = std::move(steps);
-  if (separate_record) {
+  const bool fitted = outcome.model && outcome.report.termination != Termination::failed;
+  if (separate_record && fitted) {
     outcome.report.validation = validate_on_record(*outcome.model, prepared.input, validation.input,
                                                    validation.output, request.validation);
     outcome.report.validation_rule = describe(request.validation);
   } else if (request.validate_fraction > 0.0) {
     outcome.report.validation_rule =
-        fmt::format("the last {:.4g} % of the record, continued from the end of the fit part",
+        fmt::format("last {:.4g} % of the record, continued from the end of the fit part",
                     100.0 * request.validate_fraction);
   }
+  judge_fit(outcome, {prepared.input, prepared.output, validation.input, validation.output},
+            request);
   return outcome;
 }
 

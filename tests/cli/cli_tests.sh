@@ -270,11 +270,12 @@ case_compare() {
   expect_ok "$HYST" compare --data data.csv --input v --output y --models narx,pi,bouc_wen \
     --option "pi.thresholds=$KNOWN_THRESHOLDS" --option narx.max_iterations=10 \
     --option "narx.hidden_sizes=[4]" --out-dir cmp
-  expect_stdout "| 1 | pi |" "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png"
+  expect_stdout "| 1 | pi |" "Best reference: " "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png"
   for file in ranking.md ranking.csv loops.png errors.png; do
     [ -s "cmp/$file" ] || fail "cmp/$file is missing or empty"
   done
-  [ "$(wc -l <cmp/ranking.csv)" -eq 4 ] || fail "cmp/ranking.csv should have 3 rows"
+  [ "$(grep -c '^reference,' cmp/ranking.csv)" -eq 4 ] || fail "cmp/ranking.csv: no 4 reference rows"
+  [ "$(wc -l <cmp/ranking.csv)" -eq 8 ] || fail "cmp/ranking.csv should have 3 model and 4 reference rows"
   grep -q '^1,pi,' cmp/ranking.csv || fail "pi is not ranked first: $(cat cmp/ranking.csv)"
   head -n 31 data.csv >short.csv
   run "$HYST" compare --data short.csv --input v --output y --models narx,pi --out-dir cmp
@@ -305,7 +306,8 @@ case_compare_loop_file() {
   expect_ok "$HYST" compare --data "$loop" --input Field --output "Adjusted Moment" \
     --models pi,backlash_like --no-plots
   expect_stdout "| pi |" "| backlash_like |" "samples 0..180"
-  [ "$(wc -l <ranking.csv)" -eq 3 ] || fail "ranking.csv should have 2 rows: $(cat ranking.csv)"
+  [ "$(wc -l <ranking.csv)" -eq 7 ] ||
+    fail "ranking.csv should have 2 model and 4 reference rows: $(cat ranking.csv)"
   expect_error 1 "Conc_40_C3B.hys: no column 'Adjusted moment' (columns: Field, Moment, " -- \
     "$HYST" compare --data "$loop" --input Field --output "Adjusted moment" --no-plots
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -53,9 +54,10 @@ TEST(CompareModels, PiRecordRanksPiFirst) {
   }
   // The generating model with its own thresholds reproduces the record to rounding.
   EXPECT_EQ(comparison.ranking.front().model, "pi");
-  EXPECT_LT(comparison.ranking.front().validation.nrmse, 1e-9);
+  EXPECT_LT(comparison.ranking.front().validation.nrmse_percent, 1e-7);
   EXPECT_EQ(comparison.ranking.front().parameters, 5u);  // 4 weights and the offset
-  EXPECT_LE(comparison.ranking[1].validation.nrmse, comparison.ranking[2].validation.nrmse);
+  EXPECT_LE(comparison.ranking[1].validation.nrmse_percent,
+            comparison.ranking[2].validation.nrmse_percent);
 }
 
 TEST(CompareModels, BoucWenRecordRanksBoucWenFirst) {
@@ -70,7 +72,7 @@ TEST(CompareModels, BoucWenRecordRanksBoucWenFirst) {
   const auto comparison = compare_models(v, y, options);
   ASSERT_EQ(comparison.ranking.size(), 2u);
   EXPECT_EQ(comparison.ranking.front().model, "bouc_wen") << model_comparison_markdown(comparison);
-  EXPECT_LT(comparison.ranking.front().validation.nrmse, 1e-4);
+  EXPECT_LT(comparison.ranking.front().validation.nrmse_percent, 0.01);
 }
 
 TEST(CompareModels, FailingFitIsReportedAndOthersRun) {
@@ -91,11 +93,12 @@ TEST(CompareModels, FailingFitIsReportedAndOthersRun) {
   const auto markdown = model_comparison_markdown(comparison);
   EXPECT_NE(markdown.find("| 1 | pi |"), std::string::npos) << markdown;
   EXPECT_NE(markdown.find("| - | narx | - |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("Yardstick (reference predictors"), std::string::npos) << markdown;
   EXPECT_NE(markdown.find("failed: NARX fit:"), std::string::npos) << markdown;
   const auto csv = model_comparison_csv(comparison);
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3 + 4);  // header, 2 models, 4 references
   EXPECT_NE(csv.find("\n1,pi,"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\n-,narx,failed,,,,,,,\"NARX fit:"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n-,narx,failed,,,,,,,,\"NARX fit:"), std::string::npos) << csv;
 }
 
 TEST(CompareModels, BadDataIsReportedForEveryModel) {
@@ -118,6 +121,74 @@ TEST(CompareModels, BadDataIsReportedForEveryModel) {
   }
 }
 
+TEST(CompareModels, LongHoldAtTheEndIsWonByTheHeldValue) {
+  // A PI record whose input stops at sample 600 and holds to the end, while the output creeps
+  // towards a level 0.3 higher with a time constant of 50 samples (no rate-independent model has
+  // creep). The held-out part (samples 750..999) lies in the hold, where the output has nearly
+  // settled: holding the last fitted value is off by at most 0.3 exp(-3) = 0.015, a model that
+  // cannot creep by the part of the creep it averaged over in the fit part.
+  auto v = test::random_walk(600, 12);
+  v.resize(1000, v.back());
+  auto y = pi_output(v);
+  for (std::size_t k = 600; k < y.size(); ++k)
+    y[k] += 0.3 * (1.0 - std::exp(-static_cast<double>(k - 600) / 50.0));
+  CompareOptions options;
+  options.models = {"pi", "bouc_wen"};
+  options.fit_options["pi"] = {{"thresholds", kThresholds}};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, y, options);
+  const auto markdown = model_comparison_markdown(comparison);
+  SCOPED_TRACE(markdown);
+  const auto* yardstick = best_reference(comparison.references);
+  ASSERT_NE(yardstick, nullptr);
+  EXPECT_EQ(yardstick->name, "last value held");
+  for (const auto& row : comparison.ranking) {
+    ASSERT_TRUE(row.ok) << row.model << ": " << row.error;
+    EXPECT_FALSE(row.beats_yardstick) << row.model;
+    EXPECT_GT(row.validation.nrmse_percent, yardstick->validation->nrmse_percent);
+  }
+  EXPECT_NE(markdown.find("Best reference: last value held"), std::string::npos);
+  EXPECT_NE(markdown.find("Models that do not beat it: "), std::string::npos);
+  EXPECT_NE(markdown.find("| 1 | " + comparison.ranking.front().model + " | "), std::string::npos);
+  const auto csv = model_comparison_csv(comparison);
+  EXPECT_NE(csv.find("\nreference,\"reference: last value held\",reference,"), std::string::npos)
+      << csv;
+  for (const auto& row : comparison.ranking) {
+    EXPECT_NE(markdown.find("| " + row.model + " | "), std::string::npos);
+    EXPECT_NE(csv.find(row.model + ","), std::string::npos);
+  }
+}
+
+TEST(CompareModels, ButterflyRecordGetsTheNoFitVerdict) {
+  // The output is the square of a sine input: on every branch it falls to 0 and rises again (a
+  // butterfly). A model with monotone branches misses half of each branch; the best constant
+  // is off by the standard deviation of sin^2, sqrt(3/8 - 1/4) = 35 % of the range 1.
+  std::vector<double> v(800);
+  std::vector<double> y(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k] = std::sin(2.0 * std::numbers::pi * static_cast<double>(k) / 100.0);
+    y[k] = v[k] * v[k];
+  }
+  CompareOptions options;
+  options.models = {"pi", "bouc_wen"};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, y, options);
+  const auto markdown = model_comparison_markdown(comparison);
+  SCOPED_TRACE(markdown);
+  ASSERT_TRUE(comparison.ranking.front().ok);
+  EXPECT_GT(comparison.ranking.front().validation.nrmse_percent, 20.0);
+  ASSERT_TRUE(comparison.no_fit);
+  EXPECT_TRUE(comparison.no_fit->butterfly);
+  EXPECT_NE(markdown.find("No model describes this record: the best held-out NRMSE is "),
+            std::string::npos);
+  EXPECT_NE(markdown.find("above 20 %. Seen: butterfly"), std::string::npos);
+  // With a threshold above the best NRMSE there is no verdict.
+  options.no_fit_percent = 1000.0;
+  const auto lenient = compare_models(v, y, options);
+  EXPECT_FALSE(lenient.no_fit);
+  EXPECT_EQ(model_comparison_markdown(lenient).find("No model describes"), std::string::npos);
+}
+
 TEST(CompareModels, RejectsWhatConcernsEveryModel) {
   const auto v = test::random_walk(100, 9);
   const auto y = pi_output(v);
@@ -134,6 +205,9 @@ TEST(CompareModels, RejectsWhatConcernsEveryModel) {
   options.validate_fraction = 1.0;
   EXPECT_HYST_ERROR(compare_models(v, y, options), "validate_fraction = 1 must be > 0 and < 1");
   options.validate_fraction = 0.25;
+  options.no_fit_percent = 0.0;
+  EXPECT_HYST_ERROR(compare_models(v, y, options), "no_fit_percent = 0 must be finite and > 0");
+  options.no_fit_percent = 20.0;
   const std::vector<double> one = {1.0};
   EXPECT_HYST_ERROR(compare_models(one, one, options), "compare: 1 samples");
   const std::vector<double> shorter(v.begin(), v.begin() + 50);

@@ -45,7 +45,7 @@ TEST(FitJilesAtherton, RecoversKnownParametersFromSimulatedLoops) {
     EXPECT_NEAR(p.k, truth.k, 1e-3 * truth.k);
     EXPECT_NEAR(p.c, truth.c, 1e-3);
     EXPECT_NEAR(p.alpha, truth.alpha, 1e-3 * truth.alpha);
-    EXPECT_LT(fit.report.fit.nrmse, 1e-5);
+    EXPECT_LT(fit.report.fit.nrmse_percent, 0.001);
   }
 }
 
@@ -64,11 +64,11 @@ TEST(FitJilesAtherton, MeasuredFerriteLargestLoopPredictsTheNestedLoops) {
   EXPECT_NE(fit.report.termination, Termination::failed) << fit.report.message;
   // Measured (docs/results.md): fit NRMSE 0.7 %; predicted loops 40 A/m 1.7 %, 16 A/m 9 %,
   // 8 A/m 19 % (the smallest loop is the known weak point of a major-loop JA fit).
-  EXPECT_LT(fit.report.fit.nrmse, 0.01);
-  const double nrmse_40 = error_metrics(b[2], simulate_bh_loop(fit.model, h[2])).nrmse;
-  const double nrmse_16 = error_metrics(b[1], simulate_bh_loop(fit.model, h[1])).nrmse;
-  EXPECT_LT(nrmse_40, 0.03);
-  EXPECT_LT(nrmse_16, 0.12);
+  EXPECT_LT(fit.report.fit.nrmse_percent, 1);
+  const double nrmse_40 = error_metrics(b[2], simulate_bh_loop(fit.model, h[2])).nrmse_percent;
+  const double nrmse_16 = error_metrics(b[1], simulate_bh_loop(fit.model, h[1])).nrmse_percent;
+  EXPECT_LT(nrmse_40, 3.0);
+  EXPECT_LT(nrmse_16, 12.0);
 }
 
 TEST(FitJilesAtherton, RejectsBadLoops) {

@@ -284,7 +284,7 @@ TEST(FitPrandtlIshlinskii, HeldOutFractionIsPredictedFromTheFitState) {
   const ErrorMetrics validation = error_metrics(all_measured.last(1000), all_predicted.last(1000));
   ASSERT_TRUE(coarse.report.validation);
   EXPECT_DOUBLE_EQ(coarse.report.fit.rmse, fit.rmse);
-  EXPECT_DOUBLE_EQ(coarse.report.fit.nrmse, fit.nrmse);
+  EXPECT_DOUBLE_EQ(coarse.report.fit.nrmse_percent, fit.nrmse_percent);
   EXPECT_DOUBLE_EQ(coarse.report.validation->rmse, validation.rmse);
   EXPECT_DOUBLE_EQ(coarse.report.validation->max_error, validation.max_error);
   EXPECT_DOUBLE_EQ(coarse.report.final_cost, 0.5 * 3000 * fit.rmse * fit.rmse);
@@ -310,7 +310,7 @@ TEST(FitPrandtlIshlinskii, SeparateValidationRecordStartsFromItsOwnState) {
       simulate_from(fit.model, pi_periodic_state(fit.model, other_input), other_input);
   const ErrorMetrics expected = error_metrics(other_output, predicted);
   EXPECT_DOUBLE_EQ(fit.report.validation->rmse, expected.rmse);
-  EXPECT_DOUBLE_EQ(fit.report.validation->nrmse, expected.nrmse);
+  EXPECT_DOUBLE_EQ(fit.report.validation->nrmse_percent, expected.nrmse_percent);
   // Fit metrics are the same as without the validation record.
   const PiFit alone = fit_prandtl_ishlinskii(fit_input, fit_output, options);
   EXPECT_EQ(alone.model.params().weights, fit.model.params().weights);

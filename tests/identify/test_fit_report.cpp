@@ -18,13 +18,14 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 TEST(ErrorMetrics, HandCalculated) {
-  // errors e = (0, 1, -2, 1): sum e^2 = 6, RMSE = sqrt(6/4), range of measured = 4 - 0 = 4.
+  // errors e = (0, 1, -2, 1): sum e^2 = 6, RMSE = sqrt(6/4), range of measured = 4 - 0 = 4,
+  // NRMSE = 100 % * RMSE / range.
   const std::vector<double> measured{0, 1, 4, 2};
   const std::vector<double> predicted{0, 0, 6, 1};
   const ErrorMetrics metrics = error_metrics(measured, predicted);
   EXPECT_EQ(metrics.samples, 4u);
   EXPECT_DOUBLE_EQ(metrics.rmse, std::sqrt(1.5));
-  EXPECT_DOUBLE_EQ(metrics.nrmse, std::sqrt(1.5) / 4.0);
+  EXPECT_DOUBLE_EQ(metrics.nrmse_percent, 100.0 * std::sqrt(1.5) / 4.0);  // in %
   EXPECT_EQ(metrics.max_error, 2.0);
 }
 
@@ -32,7 +33,7 @@ TEST(ErrorMetrics, PerfectPredictionIsZero) {
   const std::vector<double> measured{-1, 3, 2};
   const ErrorMetrics metrics = error_metrics(measured, measured);
   EXPECT_EQ(metrics.rmse, 0.0);
-  EXPECT_EQ(metrics.nrmse, 0.0);
+  EXPECT_EQ(metrics.nrmse_percent, 0.0);
   EXPECT_EQ(metrics.max_error, 0.0);
 }
 
@@ -72,7 +73,7 @@ FitReport example_report() {
   report.initial_cost = 123456.0;
   report.final_cost = 789.5;
   report.parameters = 11;
-  report.fit = {401, 12.25, 0.0125, 40.5};
+  report.fit = {401, 12.25, 1.25, 40.5};  // NRMSE in %
   report.seconds = 0.00125;
   return report;
 }
@@ -89,10 +90,39 @@ TEST(FitReport, BriefHasTheFigures) {
   EXPECT_FALSE(contains(brief, "Validation"));
   EXPECT_EQ(brief.find('\n'), std::string::npos) << "one paragraph";
 
-  report.validation = ErrorMetrics{1604, 20.5, 0.02, 75.25};
+  report.validation = ErrorMetrics{1604, 20.5, 2.0, 75.25};
   brief = report.brief();
   EXPECT_TRUE(contains(brief, "Validation: RMSE 20.5, NRMSE 2 %, max error 75.25 on 1604 samples."))
       << brief;
+}
+
+TEST(FitReport, StatusAndYardstickAreStated) {
+  FitReport report = example_report();
+  report.validation = ErrorMetrics{1604, 20.5, 2.0, 75.25};
+  report.quality = FitQuality::degenerate;
+  report.quality_note = "the held-out prediction is nearly constant";
+  ReferenceScore held{"last value held", ErrorMetrics{1604, 10.0, 1.5, 30.0}, "", {}};
+  ReferenceScore mean{"mean", ErrorMetrics{1604, 50.0, 9.0, 90.0}, "", {}};
+  report.references = {mean, held};
+  const auto brief = report.brief();
+  EXPECT_TRUE(contains(brief,
+                       "pi fitted by nnls (Lawson-Hanson): degenerate (the method: "
+                       "converged; the held-out prediction is nearly constant) after 17"))
+      << brief;
+  EXPECT_FALSE(contains(brief, ": converged after")) << brief;
+  // 2 % against the held value's 1.5 %: the model does not beat the yardstick.
+  EXPECT_EQ(report.beats_yardstick(), false);
+  EXPECT_TRUE(contains(brief,
+                       "the best reference predictor on the held-out part is 'last value "
+                       "held' with NRMSE 1.5 %; the model does not beat it."))
+      << brief;
+  const auto full = report.full();
+  EXPECT_TRUE(contains(full, "status                    degenerate")) << full;
+  EXPECT_TRUE(contains(full, "mean")) << full;
+  report.references = {mean};
+  EXPECT_EQ(report.beats_yardstick(), true);
+  report.validation.reset();
+  EXPECT_EQ(report.beats_yardstick(), std::nullopt);
 }
 
 TEST(FitReport, FullHasEveryField) {
@@ -102,6 +132,7 @@ TEST(FitReport, FullHasEveryField) {
   for (const std::string part : {"model",        "pi",
                                  "method",       "nnls (Lawson-Hanson)",
                                  "termination",  "max_iterations",
+                                 "status",       "iteration limit",
                                  "message",      "KKT conditions hold",
                                  "iterations",   "17",
                                  "parameters",   "11",
@@ -116,7 +147,7 @@ TEST(FitReport, FullHasEveryField) {
   EXPECT_TRUE(contains(full, "validation")) << full;
   EXPECT_TRUE(contains(full, "none")) << full;
 
-  report.validation = ErrorMetrics{1604, 20.5, 0.02, 75.25};
+  report.validation = ErrorMetrics{1604, 20.5, 2.0, 75.25};
   full = report.full();
   for (const std::string part : {"1604", "20.5", "75.25"}) {
     EXPECT_TRUE(contains(full, part)) << "missing \"" << part << "\" in\n" << full;

@@ -31,6 +31,7 @@ struct CompareCommandOptions {
   std::string output;
   std::string models;
   double validate_fraction = 0.25;
+  double no_fit_percent = 20.0;
   std::vector<std::string> option_pairs;
   std::string out_dir = ".";
   std::optional<std::size_t> table;
@@ -88,6 +89,7 @@ void run(const CompareCommandOptions& options) {
   CompareOptions compare;
   if (!options.models.empty()) compare.models = split_list(options.models);
   compare.validate_fraction = options.validate_fraction;
+  compare.no_fit_percent = options.no_fit_percent;
   compare.fit_options = fit_options(options.option_pairs);
   const std::filesystem::path folder = options.out_dir;
   if (!std::filesystem::is_directory(folder)) {
@@ -172,6 +174,9 @@ void add_compare_command(CLI::App& app) {
                       "Comma-separated model names (default: every model with a fitter)");
   command->add_option("--validate-fraction", options->validate_fraction,
                       "Last fraction of the record held out for the ranking (default 0.25)");
+  command->add_option("--no-fit-threshold", options->no_fit_percent,
+                      "Held-out NRMSE [%] of the best model above which the table says that no "
+                      "model describes the record (default 20)");
   command
       ->add_option("--option", options->option_pairs,
                    "A fit option of one model, MODEL.KEY=VALUE (repeatable), e.g. "
@@ -190,8 +195,10 @@ void add_compare_command(CLI::App& app) {
   hyst compare --data d.csv --input v --output y --models pi,gpi,narx \
       --option narx.hidden_sizes=[6] --out-dir cmp
 Every model is fitted on the first part of the record and run in free run over the whole
-record; the ranking is by the NRMSE on the held-out last part. A model whose fit fails gets
-a row with the reason; the others still run.)");
+record; the ranking is by the NRMSE [%] on the held-out last part. A model whose fit fails
+gets a row with the reason; the others still run. Reference predictors (mean, last value
+held, cubic y(v), ARX(2,2)) fitted and scored the same way are the yardstick: the table marks
+every model that does not beat the best of them.)");
   command->callback([options] { run(*options); });
 }
 

@@ -122,7 +122,7 @@ std::string models_that_can_fit(const ModelRegistry& registry) {
 nlohmann::json metrics_json(const ErrorMetrics& metrics) {
   return {{"samples", metrics.samples},
           {"rmse", metrics.rmse},
-          {"nrmse", metrics.nrmse},
+          {"nrmse_percent", metrics.nrmse_percent},
           {"max_error", metrics.max_error}};
 }
 
@@ -218,6 +218,7 @@ void run(const FitOptions& options) {
   nlohmann::json info = {{"created_by", "hyst fit"},
                          {"model", report.model},
                          {"method", report.method},
+                         {"status", std::string(report.status())},
                          {"termination", std::string(to_string(report.termination))},
                          {"message", report.message},
                          {"iterations", report.iterations},
@@ -229,6 +230,19 @@ void run(const FitOptions& options) {
                          {"data", data_info},
                          {"options", fit_json}};
   if (report.validation) info["validation"] = metrics_json(*report.validation);
+  if (!report.quality_note.empty()) info["simulation"] = report.quality_note;
+  if (!report.references.empty()) {
+    nlohmann::json references = nlohmann::json::array();
+    for (const auto& reference : report.references) {
+      references.push_back(
+          reference.validation
+              ? nlohmann::json{{"name", reference.name},
+                               {"validation", metrics_json(*reference.validation)}}
+              : nlohmann::json{{"name", reference.name}, {"error", reference.error}});
+    }
+    info["references"] = references;
+    if (const auto beats = report.beats_yardstick()) info["beats_yardstick"] = *beats;
+  }
   if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
 
   // The model file and its report are replaced together (see write_text_outputs()).
@@ -243,9 +257,9 @@ void run(const FitOptions& options) {
   fmt::print(messages, "{}\n", report.brief());
   fmt::print(messages, "wrote {}{}\n", options.out,
              options.report.empty() ? "" : fmt::format(" and {}", options.report));
-  if (report.termination != Termination::converged) {
-    warn(fmt::format("the fit stopped before converging ({}): {}", to_string(report.termination),
-                     report.message));
+  if (report.status() != "converged") {
+    warn(fmt::format("the fit is not converged ({}): {}", report.status(),
+                     report.quality_note.empty() ? report.message : report.quality_note));
   }
 }
 

@@ -12,9 +12,17 @@
 //! stop the others.
 //!
 //! Ranking: the fitted models by validation NRMSE (lowest first), then the failed ones in the
-//! order they were asked for. Columns: validation NRMSE, RMSE and max error, number of
-//! parameters, fit time [s] and simulation time per sample [ns] (DynamicModel::simulate over the
-//! whole record, repeated for at least `timing_seconds`).
+//! order they were asked for. Columns: validation NRMSE [%], RMSE and max error, whether the model
+//! beats the yardstick, number of parameters, fit time [s], simulation time per sample [ns]
+//! (DynamicModel::simulate over the whole record, repeated for at least `timing_seconds`) and the
+//! status (FitReport::status(): "converged", "iteration limit", "no progress", or "degenerate" /
+//! "unstable" when the free run judged on the held-out part says so, fit_quality.hpp).
+//!
+//! Yardstick: the reference predictors (reference_predictors.hpp) are fitted on the same fit part
+//! and scored on the same held-out part; a model beats the yardstick when its held-out NRMSE is
+//! below the best reference's. No-fit verdict: when even the best model's held-out NRMSE exceeds
+//! `no_fit_percent`, the tables say in one line that no model describes the record, with what the
+//! cheap looks of record_diagnosis.hpp see (butterfly, drift, extrapolation).
 
 #include <cstddef>
 #include <map>
@@ -27,6 +35,8 @@
 
 #include "hyst/identify/data_split.hpp"
 #include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/record_diagnosis.hpp"
+#include "hyst/identify/reference_predictors.hpp"
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst {
@@ -40,6 +50,11 @@ struct CompareOptions {
   std::map<std::string, nlohmann::json> fit_options;
   //! Minimum total time of the simulation timing per model [s] (>= 0; 0: one run).
   double timing_seconds = 0.05;
+  //! Best held-out NRMSE [%] above which no model is said to describe the record (> 0).
+  double no_fit_percent = 20.0;
+  //! The samples are a time series (ARX is among the reference predictors); false for a record
+  //! resampled on an input grid.
+  bool time_series = true;
 };
 
 //! One row of the comparison.
@@ -49,6 +64,7 @@ struct ComparedModel {
   std::string error;                //!< why not, when !ok
   std::optional<FitReport> report;  //!< the fitter's own report (on the fit part)
   ErrorMetrics validation;          //!< free run on the held-out part
+  bool beats_yardstick = false;     //!< validation NRMSE below the best reference's
   std::size_t parameters = 0;
   double fit_seconds = 0.0;
   double ns_per_sample = 0.0;
@@ -57,7 +73,11 @@ struct ComparedModel {
 
 struct ModelComparison {
   DataSplit split;
-  std::vector<ComparedModel> ranking;  //!< best first; failed rows last
+  std::vector<ComparedModel> ranking;      //!< best first; failed rows last
+  std::vector<ReferenceScore> references;  //!< the yardstick, on the same held-out part
+  double no_fit_percent = 20.0;            //!< the threshold of the no-fit verdict [%]
+  //! Set when the best model's held-out NRMSE exceeds no_fit_percent: what the record shows.
+  std::optional<RecordDiagnosis> no_fit;
 };
 
 //! Fits and ranks the models (see the file comment). Throws hyst::Error only for problems that
@@ -69,10 +89,21 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
                                const CompareOptions& options = {},
                                const ModelRegistry& registry = ModelRegistry::builtin());
 
-//! The ranking as a Markdown table (one row per model; failed rows carry the reason).
+//! One line naming every reference predictor's held-out NRMSE and the best of them, e.g.
+//! "Yardstick (reference predictors on the held-out part): mean 48.1 %, ...; best: last value
+//! held, 2.5 %. Models that do not beat it: narx, pi."
+std::string yardstick_line(const ModelComparison& comparison);
+//! The no-fit verdict in one line, e.g. "No model describes this record: the best held-out NRMSE
+//! is 373 % (pi), above 20 %. Seen: butterfly: ..."; empty when comparison.no_fit is not set.
+std::string no_fit_line(const ModelComparison& comparison);
+
+//! The ranking as a Markdown table (one row per model; failed rows carry the reason), after the
+//! yardstick line and the no-fit verdict.
 std::string model_comparison_markdown(const ModelComparison& comparison);
-//! The ranking as CSV: rank,model,status,validation_nrmse,validation_rmse,validation_max_error,
-//! parameters,fit_seconds,simulation_ns_per_sample,message (quoted).
+//! The ranking as CSV: rank,model,status,validation_nrmse_percent,validation_rmse,
+//! validation_max_error,beats_yardstick,parameters,fit_seconds,simulation_ns_per_sample,message
+//! (quoted); then one row per reference predictor with rank "reference" and model "reference:
+//! NAME".
 std::string model_comparison_csv(const ModelComparison& comparison);
 
 }  // namespace hyst

@@ -2,19 +2,21 @@
 //! \file
 //! The report every fitter of hyst returns, whatever the model and the method.
 //!
-//! Cost and error metrics, with e[k] = measured[k] - predicted[k] over N samples:
+//! Cost, with e[k] = measured[k] - predicted[k] over the N samples of the fit part:
 //!
 //!     cost      = 0.5 * sum_k e[k]^2                       [output units^2]
-//!     RMSE      = sqrt(sum_k e[k]^2 / N)                   [output units]
-//!     NRMSE     = RMSE / (max_k measured[k] - min_k measured[k])   [-]
-//!     max error = max_k |e[k]|                             [output units]
 //!
 //! `initial_cost` is the cost before fitting: for a linear-in-the-weights model it is the cost of
 //! the best constant (all weights 0, offset fitted), so final_cost / initial_cost says how much of
 //! the variance the model explains. `fit` is measured on the samples used for fitting;
 //! `validation`, when present, on held-out samples (the last part of the record, or another record)
-//! that the fitter never saw. NRMSE is normalised by the range (not the standard deviation) of the
-//! measured output, so 0.01 means "1 % of the peak-to-peak output".
+//! that the fitter never saw; RMSE, NRMSE [%] and max error are defined in error_metrics.hpp.
+//!
+//! The status of a fit (status()) is decided in one place: how the method ended (`termination`),
+//! overruled by the judgement of the fitted model's simulation (`quality`, fit_quality.hpp), so
+//! that a converged fit whose prediction is nearly constant or runs away is never reported as
+//! "converged". With a held-out part of the record, `references` holds the yardstick
+//! (reference_predictors.hpp) scored on the same held-out samples as the model.
 
 #include <cstddef>
 #include <optional>
@@ -22,6 +24,10 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "hyst/identify/error_metrics.hpp"
+#include "hyst/identify/fit_quality.hpp"
+#include "hyst/identify/reference_predictors.hpp"
 
 namespace hyst {
 
@@ -39,19 +45,6 @@ std::string_view to_string(Termination termination);
 //! The inverse of to_string(); throws hyst::Error for any other text
 //! ("unknown termination 'done' (expected converged, max_iterations, no_progress or failed)").
 Termination termination_from_string(std::string_view text);
-
-//! How well a prediction matches a measurement (definitions in the file comment).
-struct ErrorMetrics {
-  std::size_t samples = 0;  //!< N
-  double rmse = 0.0;        //!< [output units]
-  double nrmse = 0.0;       //!< RMSE / range of the measured output [-]
-  double max_error = 0.0;   //!< max |measured - predicted| [output units]
-};
-
-//! Metrics of `predicted` against `measured`. Throws hyst::Error unless both have the same,
-//! non-zero length, every sample is finite, and the measured output is not constant (its range
-//! normalises the NRMSE).
-ErrorMetrics error_metrics(std::span<const double> measured, std::span<const double> predicted);
 
 //! Outcome of a fit: how the method ended, the cost it reached and the error on fit and
 //! validation data.
@@ -74,8 +67,22 @@ struct FitReport {
   //! How `validation` was predicted, in words (registry/validation_rule.hpp); empty when the
   //! fitter alone decided it.
   std::string validation_rule;
+  //! The judgement of the fitted model's simulation (fit_quality.hpp) and its reason.
+  FitQuality quality = FitQuality::unchecked;
+  std::string quality_note;
+  //! The reference predictors scored on the held-out part (empty without one).
+  std::vector<ReferenceScore> references;
 
-  //! One paragraph: model, method, termination, cost, fit and validation error, preprocessing.
+  //! The one word on how the fit ended: "failed", "unstable", "degenerate" (from `quality`),
+  //! else "iteration limit", "no progress" or "converged" (from `termination`).
+  std::string_view status() const;
+  //! The reference with the lowest held-out NRMSE, or null.
+  const ReferenceScore* best_reference() const { return hyst::best_reference(references); }
+  //! Does the validation NRMSE beat the best reference's? Empty without validation or references.
+  std::optional<bool> beats_yardstick() const;
+
+  //! One paragraph: model, method, status, cost, fit and validation error, yardstick,
+  //! preprocessing.
   std::string brief() const;
   //! A multi-line text table of every field.
   std::string full() const;
