@@ -5,6 +5,15 @@
 namespace hyst {
 namespace {
 
+// The value of a parameter, without its derivatives (ceres::Jet's scalar part).
+double value_of(double x) {
+  return x;
+}
+template <class Jet>
+double value_of(const Jet& x) {
+  return x.a;
+}
+
 // q = (alpha, f_slope, f_sat, v_sat, r), physical = q * scale except r.
 struct DuhemKernel {
   std::array<double, 5> scale;
@@ -25,8 +34,11 @@ struct DuhemKernel {
     if (dv == 0.0) return y;
     const T f_sat = q[2] * scale[2];
     const T v_sat = q[3] * scale[3];
-    return detail::duhem_advance(T(q[0] * scale[0]), T(q[1] * scale[1]), f_sat, v_sat,
-                                 T(q[4] * f_sat / v_sat), v_prev, y, dv, substeps);
+    // The model's step rule (duhem.hpp): steps of at most 1 / alpha in v keep RK4 stable.
+    const T alpha = q[0] * scale[0];
+    return detail::duhem_advance(alpha, T(q[1] * scale[1]), f_sat, v_sat, T(q[4] * f_sat / v_sat),
+                                 v_prev, y, dv,
+                                 detail::substeps_for(dv, substeps, 1.0 / value_of(alpha)));
   }
   template <class T>
   T output(const T*, const T& y, double) const {

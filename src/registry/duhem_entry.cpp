@@ -100,7 +100,7 @@ ModelEntry duhem_entry() {
       {"v_sat", "number", "input units", "saturation scale, > 0"},
       {"g_peak", "number", "output / input units", "peak of g above f_slope, <= f_sat / v_sat"},
       {"substeps", "whole number", "", "minimum RK4 steps per sample (20)"},
-      {"max_input_step", "number", "input units", "largest RK4 step, 0 = none (0)"},
+      {"max_input_step", "number", "input units", "largest RK4 step, 0 = automatic: 1 / alpha (0)"},
       {"tolerance", "number", "", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
   };
   entry.fit_options = {

@@ -54,6 +54,26 @@ TEST(Duhem, ConvergesToFineStepReferenceAndIsRateIndependent) {
   EXPECT_LT(max_err, 1e-9);
 }
 
+// A step of 2000 input units in one sample with alpha = 1: 20 RK4 steps of alpha dv = 100 each
+// would blow up (RK4 is stable below about 2.8). Divided into steps of 1 / alpha, y follows the
+// analytic limit: far above v_sat, g = f' = f_slope, so y - f(v) decays as e^(-alpha v) and
+// y(2000) = f(2000) = 0.5 * 2000 + tanh(2000) to rounding.
+TEST(Duhem, AOneSampleStepFarBeyondTheStabilityLimitStaysAccurate) {
+  Duhem::Params p;
+  p.alpha = 1.0;
+  p.f_slope = 0.5;
+  p.f_sat = 1.0;
+  p.v_sat = 1.0;
+  p.g_peak = 0.5;
+  const Duhem model(p);
+  EXPECT_DOUBLE_EQ(model.max_input_step(), 1.0);
+  auto state = model.initial_state();
+  const double y = model.step(state, 2000.0);
+  EXPECT_NEAR(y, 0.5 * 2000.0 + std::tanh(2000.0), 1e-9);
+  auto back = model.initial_state();
+  EXPECT_NEAR(model.step(back, -2000.0), -(0.5 * 2000.0 + std::tanh(2000.0)), 1e-9);
+}
+
 TEST(Duhem, ColemanHodgdonMargin) {
   EXPECT_GT(Duhem(Duhem::Params{}).coleman_hodgdon_margin(), 0.0);
   Duhem::Params p;

@@ -20,7 +20,10 @@
 //! s = sign(dv): with `tolerance` > 0 adaptively by Boost.Odeint's Dormand-Prince 5(4) with that
 //! absolute and relative error tolerance per step (accurate whatever the sample spacing; no
 //! allocation), otherwise by classical RK4 with max(substeps, ceil(|dv| / max_input_step)) steps
-//! (the path the fitter differentiates with ceres::Jet).
+//! (the path the fitter differentiates with ceres::Jet). y relaxes towards f(v) at the rate
+//! alpha per unit of input, so RK4 is stable only for steps alpha |dv| below about 2.8: without
+//! an explicit max_input_step the step is at most 1 / alpha (a large input step, e.g. a voltage
+//! step of one sample, is divided accordingly instead of blowing up).
 //! State: the previous input v and y; initial state v = 0, y = 0 (= f(0)).
 
 #include <array>
@@ -67,7 +70,7 @@ class Duhem {
     double v_sat = 1.0;           //!< [input units] > 0
     double g_peak = 0.5;          //!< [output/input units] <= f_sat / v_sat
     std::size_t substeps = 20;    //!< minimum RK4 steps per sample, 1..100000
-    double max_input_step = 0.0;  //!< largest RK4 step in v; 0 = no limit
+    double max_input_step = 0.0;  //!< largest RK4 step in v; 0 = automatic, 1 / alpha
     double tolerance = 0.0;       //!< 0 or [1e-14, 1]: adaptive Dormand-Prince
   };
   struct State {
@@ -93,6 +96,10 @@ class Duhem {
   //! min over v in [0, 20 v_sat] of g(v) - alpha e^(alpha v) int_v^inf |f' - g| e^(-alpha zeta):
   //! > 0 when the Coleman-Hodgdon condition holds there.
   double coleman_hodgdon_margin() const;
+  //! The largest RK4 step in v: params().max_input_step, or 1 / alpha when that is 0.
+  double max_input_step() const {
+    return params_.max_input_step > 0.0 ? params_.max_input_step : 1.0 / params_.alpha;
+  }
 
   double step(State& state, double input) const noexcept {
     HYST_ASSERT(std::isfinite(input), "step() needs a finite input");
@@ -100,7 +107,7 @@ class Duhem {
     if (dv != 0.0) {
       state.output = detail::duhem_advance(
           params_.alpha, params_.f_slope, params_.f_sat, params_.v_sat, params_.g_peak, state.input,
-          state.output, dv, detail::substeps_for(dv, params_.substeps, params_.max_input_step),
+          state.output, dv, detail::substeps_for(dv, params_.substeps, max_input_step()),
           params_.tolerance);
       state.input = input;
     }
