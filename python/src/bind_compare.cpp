@@ -3,16 +3,78 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "bindings.hpp"
+#include "hyst/core/error.hpp"
 #include "hyst/identify/compare.hpp"
+#include "hyst/identify/cross_record_compare.hpp"
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
 
 namespace hyst::python {
+namespace {
+
+// Records of hyst.compare(fit_records=..., validate_records=...): a dict {name: (input, output)}
+// or a sequence of (input, output) pairs, named "record 1", "record 2", ... in the tables.
+std::vector<NamedRecord> named_records(const py::object& records, std::string_view argument) {
+  std::vector<NamedRecord> out;
+  auto add = [&](std::string name, const py::handle& pair) {
+    const auto items = py::cast<py::sequence>(pair);
+    if (py::len(items) != 2) {
+      throw Error(fmt::format("{}: record '{}' must be a pair (input, output)", argument, name));
+    }
+    const std::string what = fmt::format("{} '{}'", argument, name);
+    out.push_back({name, as_vector(py::cast<InputArray>(items[0]), what + " input"),
+                   as_vector(py::cast<InputArray>(items[1]), what + " output")});
+  };
+  if (py::isinstance<py::dict>(records)) {
+    for (const auto& [name, pair] : py::cast<py::dict>(records))
+      add(py::cast<std::string>(name), pair);
+  } else {
+    std::size_t index = 0;
+    for (const auto& pair : py::cast<py::sequence>(records))
+      add(fmt::format("record {}", ++index), pair);
+  }
+  return out;
+}
+
+void bind_cross_record(py::module_& module) {
+  py::class_<HeldOutScore>(module, "HeldOutScore",
+                           "A model's error on one held-out record (see hyst.compare).")
+      .def_readonly("record", &HeldOutScore::record)
+      .def_readonly("fitted_on", &HeldOutScore::fitted_on, "The records the model was fitted on.")
+      .def_readonly("metrics", &HeldOutScore::metrics, "ErrorMetrics on the held-out record.");
+  py::class_<CrossRecordRow>(module, "CrossRecordRow",
+                             "One row of a comparison on separate records.")
+      .def_readonly("model", &CrossRecordRow::model)
+      .def_readonly("ok", &CrossRecordRow::ok)
+      .def_readonly("error", &CrossRecordRow::error)
+      .def_readonly("scores", &CrossRecordRow::scores, "HeldOutScore per held-out record.")
+      .def_readonly("mean_nrmse_percent", &CrossRecordRow::mean_nrmse_percent)
+      .def_readonly("worst_nrmse_percent", &CrossRecordRow::worst_nrmse_percent)
+      .def_readonly("worst_record", &CrossRecordRow::worst_record)
+      .def_readonly("parameters", &CrossRecordRow::parameters)
+      .def_readonly("fit_seconds", &CrossRecordRow::fit_seconds)
+      .def_readonly("status", &CrossRecordRow::status);
+  py::class_<CrossRecordComparison>(
+      module, "CrossRecordComparison",
+      "Models fitted on some records and ranked on others (or leave-one-out).")
+      .def_readonly("leave_one_out", &CrossRecordComparison::leave_one_out)
+      .def_readonly("fit_records", &CrossRecordComparison::fit_records)
+      .def_readonly("validate_records", &CrossRecordComparison::validate_records)
+      .def_readonly("rule", &CrossRecordComparison::rule,
+                    "How the held-out records were predicted.")
+      .def_readonly("ranking", &CrossRecordComparison::ranking, "Best first; failed models last.")
+      .def("markdown", &cross_record_markdown, "The ranking as a Markdown table.")
+      .def("csv", &cross_record_csv, "The ranking as CSV text.");
+}
+
+}  // namespace
 
 void bind_compare(py::module_& module) {
   py::class_<ComparedModel>(module, "ComparedModel",
@@ -72,33 +134,80 @@ void bind_compare(py::module_& module) {
           "input"_a, "output"_a, "title"_a = "Model comparison",
           "One self-contained HTML page: the ranking table and both figures as inline SVG.");
 
+  bind_cross_record(module);
   module.def(
       "compare",
-      [](const InputArray& input, const InputArray& output,
+      [](const std::optional<InputArray>& input, const std::optional<InputArray>& output,
          const std::optional<std::vector<std::string>>& models, double validate_fraction,
-         const std::optional<py::dict>& options, double timing_seconds, double no_fit_percent) {
+         const std::optional<py::dict>& options, double timing_seconds, double no_fit_percent,
+         const std::optional<py::object>& fit_records,
+         const std::optional<py::object>& validate_records, bool leave_one_out,
+         const std::string& validation_start, const std::string& validation_align)
+          -> std::variant<ModelComparison, CrossRecordComparison> {
+        std::map<std::string, nlohmann::json> fit_options;
+        if (options) {
+          for (const auto& [name, value] : *options) {
+            const auto model = py::cast<std::string>(name);
+            fit_options[model] = python_to_json(value, model);
+          }
+        }
+        if (fit_records) {
+          if (input || output) {
+            throw Error("hyst.compare: input/output and fit_records exclude each other");
+          }
+          if (leave_one_out == validate_records.has_value()) {
+            throw Error(
+                "hyst.compare: fit_records needs either validate_records or "
+                "leave_one_out=True");
+          }
+          CrossRecordOptions cross;
+          if (models) cross.models = *models;
+          cross.fit_options = std::move(fit_options);
+          cross.validation.start = validation_start_from_string(validation_start);
+          cross.validation.align = validation_alignment_from_string(validation_align);
+          const auto fit = named_records(*fit_records, "fit_records");
+          if (leave_one_out) {
+            py::gil_scoped_release release;
+            return compare_leave_one_out(fit, cross);
+          }
+          const auto held_out = named_records(*validate_records, "validate_records");
+          py::gil_scoped_release release;
+          return compare_across_records(fit, held_out, cross);
+        }
+        if (!input || !output) {
+          throw Error(
+              "hyst.compare: give input and output (one record, split in time) or "
+              "fit_records");
+        }
+        if (validate_records || leave_one_out) {
+          throw Error("hyst.compare: validate_records and leave_one_out need fit_records");
+        }
         CompareOptions compare;
         if (models) compare.models = *models;
         compare.validate_fraction = validate_fraction;
         compare.timing_seconds = timing_seconds;
         compare.no_fit_percent = no_fit_percent;
-        if (options) {
-          for (const auto& [name, value] : *options) {
-            const auto model = py::cast<std::string>(name);
-            compare.fit_options[model] = python_to_json(value, model);
-          }
-        }
-        const auto v = as_span(input, "input");
-        const auto y = as_span(output, "output");
+        compare.fit_options = std::move(fit_options);
+        const auto v = as_span(*input, "input");
+        const auto y = as_span(*output, "output");
         py::gil_scoped_release release;
         return compare_models(v, y, compare);
       },
-      "input"_a, "output"_a, "models"_a = py::none(), py::kw_only(), "validate_fraction"_a = 0.25,
-      "options"_a = py::none(), "timing_seconds"_a = 0.05, "no_fit_percent"_a = 20.0,
-      "Fits the models (default: every model with a fitter) to the first part of the record, "
-      "runs each in free run over the whole record and ranks them by NRMSE on the held-out last "
-      "part. options: {model name: {fit option: value}}. A model whose fit fails gets a row "
-      "with the reason (ok False); the others still run. Returns a ModelComparison.");
+      "input"_a = py::none(), "output"_a = py::none(), "models"_a = py::none(), py::kw_only(),
+      "validate_fraction"_a = 0.25, "options"_a = py::none(), "timing_seconds"_a = 0.05,
+      "no_fit_percent"_a = 20.0, "fit_records"_a = py::none(), "validate_records"_a = py::none(),
+      "leave_one_out"_a = false, "validation_start"_a = "rest", "validation_align"_a = "none",
+      "Fits the models (default: every model with a fitter) and ranks them by free-run NRMSE on "
+      "data they were not fitted on. With input and output: fitted on the first part of the "
+      "record and ranked on the held-out last part (validate_fraction; this measures "
+      "extrapolation); returns a ModelComparison. With fit_records and validate_records (each "
+      "a dict {name: (input, output)} or a list of (input, output) pairs): fitted on the fit "
+      "records joined in order (the state runs on across each junction), ranked on the separate "
+      "records predicted by validation_start ('rest', 'periodic', 'continue') and "
+      "validation_align ('none', 'first-sample'); leave_one_out=True instead holds each fit "
+      "record out in turn. Returns a CrossRecordComparison. options: {model name: {fit option: "
+      "value}}. A model whose fit fails gets a row with the reason (ok False); the others still "
+      "run.");
 }
 
 }  // namespace hyst::python

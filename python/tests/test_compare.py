@@ -85,3 +85,55 @@ def test_narx_fits_simulates_and_round_trips(tmp_path):
     hyst.save_model(path, model)
     loaded = hyst.load_model(path)
     np.testing.assert_array_equal(loaded.simulate(v), model.simulate(v))
+
+
+def sine_record(amplitude: float, samples: int = 300):
+    v = amplitude * np.sin(2 * np.pi * np.arange(samples) / 100)
+    model = hyst.PrandtlIshlinskii(THRESHOLDS, [0.8, 0.5, 0.3, 0.2])
+    return v, model.simulate(v)
+
+
+def test_compare_on_separate_records():
+    # PI records at two amplitudes, each simulated from rest: fitted with its thresholds on the
+    # large one, PI predicts the small one from rest exactly.
+    comparison = hyst.compare(models=["bouc_wen", "pi"], options={"pi": {"thresholds": THRESHOLDS}},
+                              fit_records={"large": sine_record(2.0)},
+                              validate_records={"small": sine_record(0.8)},
+                              validation_start="rest", validation_align="none")
+    assert isinstance(comparison, hyst.CrossRecordComparison)
+    assert not comparison.leave_one_out
+    assert comparison.fit_records == ["large"] and comparison.validate_records == ["small"]
+    assert "validation start 'rest'" in comparison.rule
+    best = comparison.ranking[0]
+    assert isinstance(best, hyst.CrossRecordRow)
+    assert best.model == "pi" and best.ok and best.error == "" and best.status == "converged"
+    assert best.mean_nrmse_percent < 1e-6 and best.worst_record == "small"
+    assert best.worst_nrmse_percent == best.mean_nrmse_percent
+    assert best.parameters == 5 and best.fit_seconds >= 0
+    score = best.scores[0]
+    assert isinstance(score, hyst.HeldOutScore)
+    assert score.record == "small" and score.fitted_on == ["large"]
+    assert score.metrics.nrmse_percent == best.mean_nrmse_percent
+    assert comparison.ranking[1].mean_nrmse_percent > 0.1
+    assert "| 1 | pi |" in comparison.markdown()
+    assert comparison.csv().startswith("rank,model,status,mean_nrmse_percent")
+
+
+def test_compare_leave_one_out():
+    # The small record never moves the play of threshold 1.1: held out, the large one is the worst.
+    comparison = hyst.compare(models=["pi"], options={"pi": {"thresholds": THRESHOLDS}},
+                              fit_records=[sine_record(2.0), sine_record(0.8)],
+                              leave_one_out=True)
+    assert comparison.leave_one_out and comparison.fit_records == []
+    assert comparison.validate_records == ["record 1", "record 2"]
+    row = comparison.ranking[0]
+    assert [score.record for score in row.scores] == ["record 1", "record 2"]
+    assert row.scores[1].metrics.nrmse_percent < 1e-6
+    assert row.worst_record == "record 1" and row.worst_nrmse_percent > 1e-3
+    assert row.mean_nrmse_percent == pytest.approx(
+        (row.scores[0].metrics.nrmse_percent + row.scores[1].metrics.nrmse_percent) / 2)
+    with pytest.raises(hyst.Error, match="fit_records needs either validate_records"):
+        hyst.compare(fit_records=[sine_record(2.0)])
+    with pytest.raises(hyst.Error, match="validation start 'later' is not known"):
+        hyst.compare(fit_records=[sine_record(2.0)], validate_records=[sine_record(1.0)],
+                     validation_start="later")

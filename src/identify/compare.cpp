@@ -10,6 +10,7 @@
 
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
+#include "table_cells.hpp"
 
 namespace hyst {
 namespace {
@@ -18,37 +19,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::vector<const ModelEntry*> chosen_models(const CompareOptions& options,
-                                             const ModelRegistry& registry) {
-  std::vector<const ModelEntry*> entries;
-  if (options.models.empty()) {
-    for (const auto& entry : registry.entries()) {
-      if (entry.can_fit()) entries.push_back(&entry);
-    }
-  } else {
-    for (const auto& name : options.models) {
-      const auto& entry = registry.find(name);  // throws for an unknown name, listing the known
-      if (!entry.can_fit()) {
-        throw Error(fmt::format("compare: model '{}' has no fitter", name), "models");
-      }
-      if (std::find(entries.begin(), entries.end(), &entry) != entries.end()) {
-        throw Error(fmt::format("compare: model '{}' is listed twice", name), "models");
-      }
-      entries.push_back(&entry);
-    }
-  }
-  for (const auto& option : options.fit_options) {
-    const std::string& name = option.first;  // clang 14 cannot capture a structured binding
-    const bool compared = std::any_of(entries.begin(), entries.end(),
-                                      [&](const ModelEntry* entry) { return entry->name == name; });
-    if (!compared) {
-      throw Error(fmt::format("compare: fit options given for '{}', which is not compared", name),
-                  "fit_options");
-    }
-  }
-  return entries;
 }
 
 // Nanoseconds per sample of the batch simulation of the whole record from the fitted state.
@@ -111,23 +81,8 @@ ComparedModel compare_one(const ModelEntry& entry, std::span<const double> input
   return row;
 }
 
-std::string csv_quoted(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"') out += '"';
-    out += (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  return out + "\"";
-}
-
-std::string markdown_cell(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '|') out += '\\';
-    out += (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  return out;
-}
+using detail::csv_quoted;
+using detail::markdown_cell;
 
 std::string status_of(const ComparedModel& row) {
   if (!row.ok) return "failed";
@@ -144,6 +99,38 @@ const ComparedModel* best_model(const ModelComparison& comparison) {
 }
 
 }  // namespace
+
+std::vector<const ModelEntry*> compared_models(
+    const std::vector<std::string>& models,
+    const std::map<std::string, nlohmann::json>& fit_options, const ModelRegistry& registry) {
+  std::vector<const ModelEntry*> entries;
+  if (models.empty()) {
+    for (const auto& entry : registry.entries()) {
+      if (entry.can_fit()) entries.push_back(&entry);
+    }
+  } else {
+    for (const auto& name : models) {
+      const auto& entry = registry.find(name);  // throws for an unknown name, listing the known
+      if (!entry.can_fit()) {
+        throw Error(fmt::format("compare: model '{}' has no fitter", name), "models");
+      }
+      if (std::find(entries.begin(), entries.end(), &entry) != entries.end()) {
+        throw Error(fmt::format("compare: model '{}' is listed twice", name), "models");
+      }
+      entries.push_back(&entry);
+    }
+  }
+  for (const auto& option : fit_options) {
+    const std::string& name = option.first;  // clang 14 cannot capture a structured binding
+    const bool compared = std::any_of(entries.begin(), entries.end(),
+                                      [&](const ModelEntry* entry) { return entry->name == name; });
+    if (!compared) {
+      throw Error(fmt::format("compare: fit options given for '{}', which is not compared", name),
+                  "fit_options");
+    }
+  }
+  return entries;
+}
 
 ModelComparison compare_models(std::span<const double> input, std::span<const double> output,
                                const CompareOptions& options, const ModelRegistry& registry) {
@@ -169,7 +156,7 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
                             input.size()),
                 "input");
   }
-  const auto entries = chosen_models(options, registry);
+  const auto entries = compared_models(options.models, options.fit_options, registry);
   ModelComparison comparison;
   comparison.split = split_by_fraction(input.size(), options.validate_fraction);
   for (const auto* entry : entries)
@@ -244,6 +231,11 @@ std::string model_comparison_markdown(const ModelComparison& comparison) {
       "Fit on samples {}..{}, ranked by free-run error on the held-out samples {}..{}.\n\n",
       comparison.split.fit_begin, comparison.split.fit_end - 1, comparison.split.validation_begin,
       comparison.split.validation_end - 1);
+  text +=
+      "Time split: the held-out part follows the fit part in the same record, so the ranking "
+      "measures extrapolation (in time and to any input range the fit part did not reach); rank "
+      "on separate records for the range itself (hyst compare --fit-records/--validate-records "
+      "or --leave-one-out).\n\n";
   if (const auto verdict = no_fit_line(comparison); !verdict.empty()) text += verdict + "\n\n";
   text += yardstick_line(comparison) + "\n\n";
   text +=

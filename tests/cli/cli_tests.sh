@@ -270,7 +270,8 @@ case_compare() {
   expect_ok "$HYST" compare --data data.csv --input v --output y --models narx,pi,bouc_wen \
     --option "pi.thresholds=$KNOWN_THRESHOLDS" --option narx.max_iterations=10 \
     --option "narx.hidden_sizes=[4]" --out-dir cmp
-  expect_stdout "| 1 | pi |" "Best reference: " "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png"
+  expect_stdout "| 1 | pi |" "Best reference: " "wrote cmp/ranking.md, cmp/ranking.csv, cmp/loops.png and cmp/errors.png" \
+    "Time split: the held-out part follows the fit part in the same record, so the ranking measures extrapolation"
   for file in ranking.md ranking.csv loops.png errors.png; do
     [ -s "cmp/$file" ] || fail "cmp/$file is missing or empty"
   done
@@ -293,6 +294,53 @@ case_compare() {
     "$HYST" compare --data data.csv --input v --output y --models pi,nope --out-dir cmp
   expect_error 1 "--out-dir 'missing' is not an existing folder" -- \
     "$HYST" compare --data data.csv --input v --output y --out-dir missing
+  expect_no_temporaries
+}
+
+case_compare_records() {
+  # Two records of the known PI model, each simulated from rest: a sine of amplitude 2 and one of
+  # amplitude 0.8 (v1,y1,v2,y2 of one CSV). Fitted with its thresholds on the large one, PI
+  # predicts the small one from rest exactly; held out in turn, the large one is not predicted
+  # exactly from the small one, which never moves the play of threshold 1.0.
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  for amplitude in 2 0.8; do
+    awk -v a="$amplitude" 'BEGIN { pi = atan2(0, -1); print "v"
+      for (k = 0; k < 300; ++k) printf "%.17g\n", a * sin(2 * pi * k / 100) }' >"in_$amplitude.csv"
+    expect_ok "$HYST" simulate --model known.json --input "in_$amplitude.csv" --out "out_$amplitude.csv"
+  done
+  paste -d, out_2.csv out_0.8.csv | sed '1s/.*/v1,y1,v2,y2/' >records.csv
+  mkdir cmp
+  expect_ok "$HYST" compare --data records.csv --fit-records v1:y1 --validate-records v2:y2 \
+    --models bouc_wen,pi --option "pi.thresholds=$KNOWN_THRESHOLDS" --out-dir cmp
+  expect_stdout "Fitted on the records v1:y1 (joined in this order" "ranked on the separate records v2:y2" \
+    "validation start 'rest'" "| 1 | pi |" "wrote cmp/ranking.md and cmp/ranking.csv"
+  head -n 1 cmp/ranking.csv | grep -q '"nrmse_percent:v2:y2",message$' ||
+    fail "cmp/ranking.csv header: $(head -n 1 cmp/ranking.csv)"
+  awk -F, '$2 == "pi" && !($4 < 1e-6) { exit 1 }' cmp/ranking.csv ||
+    fail "pi does not predict the held-out record exactly: $(cat cmp/ranking.csv)"
+  [ ! -e cmp/loops.png ] || fail "the cross-record ranking writes no plots"
+  expect_ok "$HYST" compare --data records.csv --fit-records v1:y1,v2:y2 --leave-one-out \
+    --models pi --option "pi.thresholds=$KNOWN_THRESHOLDS" --validation-start rest \
+    --validation-align none --out-dir cmp
+  expect_stdout "Leave-one-out over the records v1:y1, v2:y2" "mean held-out NRMSE [%] | worst held-out NRMSE [%]"
+  grep -q '^1,pi,[a-z ]*,[0-9.e+-]*,[0-9.e+-]*,"v1:y1",' cmp/ranking.csv ||
+    fail "the worst held-out record should be v1:y1: $(cat cmp/ranking.csv)"
+  expect_error 1 "--fit-records needs either --validate-records or --leave-one-out" -- \
+    "$HYST" compare --data records.csv --fit-records v1:y1 --out-dir cmp
+  expect_error 1 "--validate-records 'v2': expected INPUT:OUTPUT" -- \
+    "$HYST" compare --data records.csv --fit-records v1:y1 --validate-records v2 --out-dir cmp
+  expect_error 1 "records.csv: no column 'y3' (columns: v1, y1, v2, y2)" -- \
+    "$HYST" compare --data records.csv --fit-records v1:y1 --validate-records v2:y3 --out-dir cmp
+  expect_error 1 "--input/--output and --fit-records exclude each other" -- \
+    "$HYST" compare --data records.csv --input v1 --output y1 --fit-records v1:y1 \
+    --validate-records v2:y2 --out-dir cmp
+  expect_error 1 "validation start 'later' is not known" -- \
+    "$HYST" compare --data records.csv --fit-records v1:y1 --validate-records v2:y2 \
+    --validation-start later --out-dir cmp
+  expect_error 1 "leave-one-out needs at least 2 records" -- \
+    "$HYST" compare --data records.csv --fit-records v1:y1 --leave-one-out --out-dir cmp
+  expect_error 1 "give --input and --output (one record, split in time) or --fit-records" -- \
+    "$HYST" compare --data records.csv --out-dir cmp
   expect_no_temporaries
 }
 

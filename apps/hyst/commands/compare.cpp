@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -16,6 +18,7 @@
 #include "../data_source.hpp"
 #include "commands.hpp"
 #include "hyst/identify/compare.hpp"
+#include "hyst/identify/cross_record_compare.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
 #include "hyst/io/output_set.hpp"
@@ -37,17 +40,22 @@ struct CompareCommandOptions {
   std::optional<std::size_t> table;
   bool no_plots = false;
   std::string html;
+  std::string fit_records;
+  std::string validate_records;
+  bool leave_one_out = false;
+  std::string validation_start = "rest";
+  std::string validation_align = "none";
 };
 
-std::vector<std::string> split_list(const std::string& text) {
+std::vector<std::string> split_list(const std::string& text, std::string_view option,
+                                    std::string_view example) {
   std::vector<std::string> items;
   std::size_t start = 0;
   while (start <= text.size()) {
     const auto comma = std::min(text.find(',', start), text.size());
     const auto item = text.substr(start, comma - start);
     if (item.empty()) {
-      throw Error(
-          fmt::format("--models '{}': an empty model name (expected e.g. pi,gpi,narx)", text));
+      throw Error(fmt::format("{} '{}': an empty item (expected e.g. {})", option, text, example));
     }
     items.push_back(item);
     start = comma + 1;
@@ -78,6 +86,66 @@ std::map<std::string, nlohmann::json> fit_options(const std::vector<std::string>
   return options;
 }
 
+//! The records of --fit-records / --validate-records: INPUT:OUTPUT variables of --data, named
+//! so in the tables.
+std::vector<NamedRecord> read_records(const DataSource& data, const std::string& list,
+                                      std::string_view option) {
+  std::vector<NamedRecord> records;
+  for (const auto& item : split_list(list, option, "Vplus_15kv:Displacement_15kv,v2:y2")) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == item.size() ||
+        item.find(':', colon + 1) != std::string::npos) {
+      throw Error(fmt::format("{} '{}': expected INPUT:OUTPUT, e.g. Vplus_15kv:Displacement_15kv",
+                              option, item));
+    }
+    auto pair = read_column_pair(data, item.substr(0, colon), item.substr(colon + 1), "data");
+    records.push_back({item, std::move(pair.input), std::move(pair.output)});
+  }
+  return records;
+}
+
+//! --fit-records with --validate-records or --leave-one-out: the cross-record ranking, tables
+//! only.
+void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions compare) {
+  if (!options.input.empty() || !options.output.empty()) {
+    throw Error(
+        "--input/--output and --fit-records exclude each other: give the records as "
+        "INPUT:OUTPUT in --fit-records");
+  }
+  if (options.leave_one_out == !options.validate_records.empty()) {
+    throw Error("--fit-records needs either --validate-records or --leave-one-out");
+  }
+  compare.validation.start = validation_start_from_string(options.validation_start);
+  compare.validation.align = validation_alignment_from_string(options.validation_align);
+  const std::filesystem::path folder = options.out_dir;
+  if (!std::filesystem::is_directory(folder)) {
+    throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
+  }
+  const std::vector<std::string> names{"ranking.md", "ranking.csv"};
+  io::check_outputs({{options.data, "--data"}},
+                    {{folder / names[0], "--out-dir"}, {folder / names[1], "--out-dir"}});
+  io::OutputSet set(folder, names);
+  const DataSource data(options.data, options.table);
+  const auto fit = read_records(data, options.fit_records, "--fit-records");
+  const auto comparison =
+      options.leave_one_out
+          ? compare_leave_one_out(fit, compare)
+          : compare_across_records(
+                fit, read_records(data, options.validate_records, "--validate-records"), compare);
+  const auto markdown = cross_record_markdown(comparison);
+  io::write_file_atomically(set.staged("ranking.md"), markdown);
+  io::write_file_atomically(set.staged("ranking.csv"), cross_record_csv(comparison));
+  set.publish();
+  fmt::print("{}wrote {} and {}\n", markdown, (folder / "ranking.md").string(),
+             (folder / "ranking.csv").string());
+  bool any_fitted = false;
+  for (const auto& row : comparison.ranking) {
+    if (!row.ok) warn(fmt::format("model '{}' was not fitted: {}", row.model, row.error));
+    any_fitted = any_fitted || row.ok;
+  }
+  if (!any_fitted) throw Error("no model could be fitted to the records (see the table)");
+}
+
 //! Does `file` lie directly in `folder` (the same folder, also through links)?
 bool in_folder(const std::filesystem::path& file, const std::filesystem::path& folder) {
   const auto parent = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
@@ -86,8 +154,18 @@ bool in_folder(const std::filesystem::path& file, const std::filesystem::path& f
 }
 
 void run(const CompareCommandOptions& options) {
+  if (!options.fit_records.empty()) {
+    CrossRecordOptions cross;
+    if (!options.models.empty()) cross.models = split_list(options.models, "--models", "pi,narx");
+    cross.fit_options = fit_options(options.option_pairs);
+    run_cross_record(options, std::move(cross));
+    return;
+  }
+  if (options.input.empty() || options.output.empty()) {
+    throw Error("give --input and --output (one record, split in time) or --fit-records");
+  }
   CompareOptions compare;
-  if (!options.models.empty()) compare.models = split_list(options.models);
+  if (!options.models.empty()) compare.models = split_list(options.models, "--models", "pi,narx");
   compare.validate_fraction = options.validate_fraction;
   compare.no_fit_percent = options.no_fit_percent;
   compare.fit_options = fit_options(options.option_pairs);
@@ -164,16 +242,48 @@ void add_compare_command(CLI::App& app) {
       ->add_option("--data", options->data,
                    "Measured data: CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
       ->required();
-  command->add_option("--input", options->input, "Input column (variable) of --data")->required();
-  command->add_option("--output", options->output, "Output column (variable) of --data")
-      ->required();
+  command->add_option("--input", options->input,
+                      "Input column (variable) of --data (the time-split ranking)");
+  command->add_option("--output", options->output,
+                      "Output column (variable) of --data (the time-split ranking)");
+  auto* fit_records = command->add_option(
+      "--fit-records", options->fit_records,
+      "Rank on separate records: the records the models are fitted on, INPUT:OUTPUT variables of "
+      "--data, comma-separated (joined in this order)");
+  auto* validate_records =
+      command
+          ->add_option("--validate-records", options->validate_records,
+                       "The held-out records the models are ranked on, INPUT:OUTPUT, "
+                       "comma-separated")
+          ->needs(fit_records);
+  command
+      ->add_flag("--leave-one-out", options->leave_one_out,
+                 "Each record of --fit-records held out in turn, the models fitted on the others; "
+                 "the table gives the mean and worst held-out NRMSE")
+      ->needs(fit_records)
+      ->excludes(validate_records);
+  command
+      ->add_option("--validation-start", options->validation_start,
+                   "State each held-out record's prediction starts from: rest (the model's "
+                   "initial state), periodic (the record's own periodic steady state) or "
+                   "continue (where the fit records ended)")
+      ->capture_default_str()
+      ->needs(fit_records);
+  command
+      ->add_option("--validation-align", options->validation_align,
+                   "none, or first-sample: shift each held-out prediction to the measured first "
+                   "sample (records zeroed separately)")
+      ->capture_default_str()
+      ->needs(fit_records);
   command->add_option("--out-dir", options->out_dir,
                       "Folder for ranking.md, ranking.csv, loops.png and errors.png (default: the "
                       "current folder)");
   command->add_option("--models", options->models,
                       "Comma-separated model names (default: every model with a fitter)");
-  command->add_option("--validate-fraction", options->validate_fraction,
-                      "Last fraction of the record held out for the ranking (default 0.25)");
+  command
+      ->add_option("--validate-fraction", options->validate_fraction,
+                   "Last fraction of the record held out for the ranking (default 0.25)")
+      ->excludes(fit_records);
   command->add_option("--no-fit-threshold", options->no_fit_percent,
                       "Held-out NRMSE [%] of the best model above which the table says that no "
                       "model describes the record (default 20)");
@@ -185,20 +295,33 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
-  command->add_option(
-      "--html", options->html,
-      "Also write one self-contained HTML page with the table and SVG plots ('-': standard "
-      "output)");
+  command
+      ->add_option("--html", options->html,
+                   "Also write one self-contained HTML page with the table and SVG plots ('-': "
+                   "standard output; time split only)")
+      ->excludes(fit_records);
   command->footer(R"(Examples:
   hyst compare --data d.csv --input v --output y
   hyst compare --data d.csv --input v --output y --out-dir cmp --html cmp/report.html
   hyst compare --data d.csv --input v --output y --models pi,gpi,narx \
       --option narx.hidden_sizes=[6] --out-dir cmp
-Every model is fitted on the first part of the record and run in free run over the whole
-record; the ranking is by the NRMSE [%] on the held-out last part. A model whose fit fails
-gets a row with the reason; the others still run. Reference predictors (mean, last value
-held, cubic y(v), ARX(2,2)) fitted and scored the same way are the yardstick: the table marks
-every model that does not beat the best of them.)");
+  hyst compare --data MeasurementData.mat --fit-records Vplus_15kv:Displacement_15kv \
+      --validate-records Vplus_1kv:Displacement_1kv,Vplus_11kv:Displacement_11kv \
+      --validation-start periodic --validation-align first-sample --out-dir cmp
+  hyst compare --data MeasurementData.mat --leave-one-out \
+      --fit-records Vplus_08kv:Displacement_08kv,Vplus_1kv:Displacement_1kv,Vplus_15kv:Displacement_15kv
+Time split (--input/--output): every model is fitted on the first part of the record and run
+in free run over the whole record; the ranking is by the NRMSE [%] on the held-out last part,
+which measures extrapolation (the table says so). A model whose fit fails gets a row with the
+reason; the others still run. Reference predictors (mean, last value held, cubic y(v),
+ARX(2,2)) fitted and scored the same way are the yardstick: the table marks every model that
+does not beat the best of them.
+Separate records (--fit-records): the fit records are joined in the order given (the model
+state runs on across each junction) and every model is fitted once on them; each record of
+--validate-records is predicted by the rule of --validation-start/--validation-align (as in
+'hyst fit --validation-data'). --leave-one-out holds each record of --fit-records out in turn.
+The table ranks by the mean held-out NRMSE [%] and gives the worst and every record's; tables
+only (ranking.md, ranking.csv), no plots.)");
   command->callback([options] { run(*options); });
 }
 

@@ -89,6 +89,14 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
                                const CompareOptions& options = {},
                                const ModelRegistry& registry = ModelRegistry::builtin());
 
+//! The registry entries of `models` (empty: every model with a fitter), in the order given.
+//! hyst::Error for an unknown name, a model without a fitter, a name listed twice, and fit
+//! options for a model that is not among them.
+std::vector<const ModelEntry*> compared_models(
+    const std::vector<std::string>& models,
+    const std::map<std::string, nlohmann::json>& fit_options,
+    const ModelRegistry& registry = ModelRegistry::builtin());
+
 //! One line naming every reference predictor's held-out NRMSE and the best of them, e.g.
 //! "Yardstick (reference predictors on the held-out part): mean 48.1 %, ...; best: last value
 //! held, 2.5 %. Models that do not beat it: narx, pi."

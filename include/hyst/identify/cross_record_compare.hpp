@@ -1,0 +1,103 @@
+#pragma once
+//! \file
+//! "Which model fits my actuator?" judged on records the fitters never saw: several models are
+//! fitted on some records and ranked by their error on other, separate records (another
+//! amplitude, another measurement). Unlike the time split of compare.hpp, the ranking does not
+//! measure how a model extrapolates from the start of one record to its end.
+//!
+//! Fit records: the registry fitters take one record, so the fit records are joined one after
+//! the other into one; the model state runs on across each junction (a record that starts where
+//! the previous one ended, as one period of a steady loop does, joins without a jump).
+//! Held-out records: each is predicted by the one validation rule of validation_rule.hpp (start
+//! rest / periodic / continue, alignment none / first-sample), as `hyst fit` does for a separate
+//! validation record; "continue" continues from the end of the joined fit records.
+//!
+//! Leave-one-out: each record in turn is held out and the models are fitted on the others; a
+//! model's row gives the held-out NRMSE of every record, their mean and their worst.
+//!
+//! Ranking: the models by mean held-out NRMSE (lowest first), then the failed ones in the order
+//! they were asked for. A model fails as a whole when any of its fits or predictions fails (the
+//! reason names the record); the others still run.
+
+#include <cstddef>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hyst/identify/fit_report.hpp"
+#include "hyst/registry/model_registry.hpp"
+#include "hyst/registry/validation_rule.hpp"
+
+namespace hyst {
+
+//! One measured record with a name for the tables (e.g. "Vplus_15kv:Displacement_15kv").
+struct NamedRecord {
+  std::string name;
+  std::vector<double> input;
+  std::vector<double> output;
+};
+
+struct CrossRecordOptions {
+  //! Registry names; empty: every model that has a fitter.
+  std::vector<std::string> models;
+  //! Fit options by model name (the model's FitRequest::options); others get their defaults.
+  std::map<std::string, nlohmann::json> fit_options;
+  //! How each held-out record is predicted.
+  ValidationRule validation;
+};
+
+//! The error of one model on one held-out record, fitted on `fitted_on`.
+struct HeldOutScore {
+  std::string record;
+  std::vector<std::string> fitted_on;
+  ErrorMetrics metrics;
+};
+
+//! One row of the cross-record comparison.
+struct CrossRecordRow {
+  std::string model;
+  bool ok = false;
+  std::string error;                 //!< why not, when !ok
+  std::vector<HeldOutScore> scores;  //!< one per held-out record, in the order given
+  double mean_nrmse_percent = 0.0;   //!< mean of the scores' NRMSE [%]
+  double worst_nrmse_percent = 0.0;  //!< largest of the scores' NRMSE [%]
+  std::string worst_record;          //!< the record of the worst score
+  std::size_t parameters = 0;        //!< of the (last) fitted model
+  double fit_seconds = 0.0;          //!< all fits together
+  std::string status;                //!< FitReport::status() of the (last) fit
+};
+
+struct CrossRecordComparison {
+  bool leave_one_out = false;
+  std::vector<std::string> fit_records;       //!< empty in leave-one-out mode
+  std::vector<std::string> validate_records;  //!< every record in leave-one-out mode
+  std::string rule;                           //!< describe(validation rule)
+  std::vector<CrossRecordRow> ranking;        //!< best first; failed rows last
+};
+
+//! Fits each model once on `fit` (joined) and scores it on every record of `validate`. Throws
+//! hyst::Error before any fit for: no fit or no held-out record, a record with input and output
+//! of different lengths or fewer than 2 samples, two records of the same name, an unknown model,
+//! a model without a fitter, fit options for a model that is not compared.
+CrossRecordComparison compare_across_records(
+    const std::vector<NamedRecord>& fit, const std::vector<NamedRecord>& validate,
+    const CrossRecordOptions& options = {},
+    const ModelRegistry& registry = ModelRegistry::builtin());
+
+//! Leave-one-out over `records` (at least 2): each held out in turn, the models fitted on the
+//! others joined in the order given. The same checks as compare_across_records().
+CrossRecordComparison compare_leave_one_out(
+    const std::vector<NamedRecord>& records, const CrossRecordOptions& options = {},
+    const ModelRegistry& registry = ModelRegistry::builtin());
+
+//! The ranking as Markdown: a line naming the fit and held-out records and the rule, then one row
+//! per model with its mean, worst and per-record held-out NRMSE [%].
+std::string cross_record_markdown(const CrossRecordComparison& comparison);
+//! The ranking as CSV: rank,model,status,mean_nrmse_percent,worst_nrmse_percent,worst_record,
+//! parameters,fit_seconds, one column "nrmse_percent:RECORD" per held-out record, message.
+std::string cross_record_csv(const CrossRecordComparison& comparison);
+
+}  // namespace hyst
