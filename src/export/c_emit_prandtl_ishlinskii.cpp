@@ -2,6 +2,7 @@
 // inverses (prandtl_ishlinskii.hpp, modified_prandtl_ishlinskii.hpp,
 // inverse_prandtl_ishlinskii.hpp, inverse_modified_prandtl_ishlinskii.hpp).
 
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
@@ -178,6 +179,24 @@ typedef struct {
   return code;
 }
 
+namespace {
+
+// The model's output limits as C statements; none when they are infinite (no clamp).
+std::string output_limits(const ModifiedPrandtlIshlinskii::Params& p, const CWriter& writer) {
+  std::string text;
+  if (std::isfinite(p.output_min)) {
+    text +=
+        CWriter::fill("  if (output < %L%) output = %L%;\n", {{"L", writer.number(p.output_min)}});
+  }
+  if (std::isfinite(p.output_max)) {
+    text +=
+        CWriter::fill("  if (output > %U%) output = %U%;\n", {{"U", writer.number(p.output_max)}});
+  }
+  return text;
+}
+
+}  // namespace
+
 CModelCode emit_modified_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
                                               const CExportOptions& options) {
   const ModifiedPrandtlIshlinskii mpi(
@@ -226,10 +245,10 @@ typedef struct {
       R"(@_real @_step(const @_params *params, @_state *state, @_real input) {
   const @_real hysteresis = @_play_sum(params->thresholds, params->weights, params->pi_offset,
                                        state->play, @_OPERATORS, input);
-  return params->offset +
-         @_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights, hysteresis);
-}
-)";
+  @_real output = params->offset + @_dead_zones(params->dead_zone_thresholds,
+                                                params->dead_zone_weights, hysteresis);
+)" + output_limits(p, writer) +
+      "  return output;\n}\n";
   if (!code.has_inverse) return code;
 
   const InverseModifiedPrandtlIshlinskii inverse(

@@ -34,7 +34,22 @@ std::vector<double> slip_grid(const MaxwellSlipFitOptions& options, double range
   return d;
 }
 
+MaxwellSlip::Orientation orientation_of(double area) {
+  return area < 0.0 ? MaxwellSlip::Orientation::counter_clockwise
+                    : MaxwellSlip::Orientation::clockwise;
+}
+
 }  // namespace
+
+double enclosed_area(std::span<const double> position, std::span<const double> force) {
+  const std::size_t n = std::min(position.size(), force.size());
+  double twice_area = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t next = k + 1 < n ? k + 1 : 0;  // the last term closes the loop
+    twice_area += (force[k] + force[next]) * (position[next] - position[k]);
+  }
+  return 0.5 * twice_area;
+}
 
 MaxwellSlipFit fit_maxwell_slip(std::span<const double> position, std::span<const double> force,
                                 const MaxwellSlipFitOptions& options) {
@@ -45,6 +60,9 @@ MaxwellSlipFit fit_maxwell_slip(std::span<const double> position, std::span<cons
                                           "Maxwell-slip fit", count + 2);
   const auto slip = slip_grid(options, detail::range_of(parts.fit_input));
   const std::size_t n = slip.size();
+  const double area = enclosed_area(parts.fit_input, parts.fit_output);
+  const auto orientation = options.orientation.value_or(orientation_of(area));
+  const double sign = orientation == MaxwellSlip::Orientation::clockwise ? 1.0 : -1.0;
   const auto m = static_cast<Eigen::Index>(parts.fit_input.size());
   const auto columns = static_cast<Eigen::Index>(n + (options.fit_linear_stiffness ? 1 : 0));
   Eigen::MatrixXd A(m, columns);
@@ -54,7 +72,7 @@ MaxwellSlipFit fit_maxwell_slip(std::span<const double> position, std::span<cons
     const double x = parts.fit_input[static_cast<std::size_t>(k)];
     for (std::size_t i = 0; i < n; ++i) {
       delta[i] = std::clamp(delta[i] + x - previous, -slip[i], slip[i]);
-      A(k, static_cast<Eigen::Index>(i)) = delta[i];
+      A(k, static_cast<Eigen::Index>(i)) = sign * delta[i];
     }
     if (options.fit_linear_stiffness) A(k, static_cast<Eigen::Index>(n)) = x;
     previous = x;
@@ -63,6 +81,7 @@ MaxwellSlipFit fit_maxwell_slip(std::span<const double> position, std::span<cons
   const auto solution = detail::nnls_with_offset(std::move(A), y, options.fit_offset);
 
   MaxwellSlip::Params params;
+  params.orientation = orientation;
   for (std::size_t i = 0; i < n; ++i) {
     const double k = solution.x[static_cast<Eigen::Index>(i)];
     if (k > 0.0) {
@@ -72,16 +91,23 @@ MaxwellSlipFit fit_maxwell_slip(std::span<const double> position, std::span<cons
   }
   if (params.stiffness.empty()) {
     throw Error(
-        "Maxwell-slip fit: every element stiffness came out 0 (the data show no hysteresis the "
-        "elements can explain); try other slip displacements");
+        fmt::format("Maxwell-slip fit: every element stiffness came out 0 for a {} loop ({}; the "
+                    "record encloses the signed area {:.6g}, > 0 clockwise, < 0 "
+                    "counter-clockwise): the data show no hysteresis the elements can explain "
+                    "in that orientation; try the other orientation or other slip displacements",
+                    orientation_name(orientation),
+                    options.orientation ? "given" : "detected from the enclosed area", area),
+        "orientation");
   }
   params.linear_stiffness = options.fit_linear_stiffness ? solution.x[columns - 1] : 0.0;
   params.offset = solution.offset;
   MaxwellSlipFit result{MaxwellSlip(std::move(params)), {}, {}};
   result.initial_state = result.model.state_at_rest(parts.fit_input.front());
   result.report = detail::weight_fit_report(
-      "maxwell_slip", "nnls (Lawson-Hanson) on element stiffnesses", solution,
-      static_cast<std::size_t>(columns) + (options.fit_offset ? 1 : 0), result.model,
+      "maxwell_slip",
+      fmt::format("nnls (Lawson-Hanson) on element stiffnesses, {} loop",
+                  orientation_name(orientation)),
+      solution, static_cast<std::size_t>(columns) + (options.fit_offset ? 1 : 0), result.model,
       result.initial_state, parts, start);
   return result;
 }

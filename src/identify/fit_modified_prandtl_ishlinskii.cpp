@@ -43,6 +43,11 @@ ModifiedPiFit fit_modified_prandtl_ishlinskii(std::span<const double> input,
   const std::size_t zones = options.dead_zone_thresholds.empty()
                                 ? 2 * options.dead_zones + 1
                                 : options.dead_zone_thresholds.size();
+  if (!std::isfinite(options.output_margin) || options.output_margin < 0.0) {
+    throw Error(fmt::format("modified PI fit output_margin = {} must be finite and >= 0",
+                            options.output_margin),
+                "output_margin");
+  }
   const auto parts = detail::split_record(input, output, options.validate_fraction,
                                           "modified PI fit", operators + zones);
   const auto [y_min, y_max] = std::minmax_element(parts.fit_output.begin(), parts.fit_output.end());
@@ -126,6 +131,11 @@ ModifiedPiFit fit_modified_prandtl_ishlinskii(std::span<const double> input,
   }
   params.dead_zone = DeadZoneSuperposition(std::move(inverse_map)).inverse().params();
   params.offset = y_off;
+  if (options.clamp_output) {
+    const double margin = options.output_margin * (*y_max - *y_min);
+    params.output_min = *y_min - margin;
+    params.output_max = *y_max + margin;
+  }
   ModifiedPiFit result{ModifiedPrandtlIshlinskii(std::move(params)), {}, {}};
   result.initial_state = result.model.make_state(initial.play);
   result.report = detail::weight_fit_report(

@@ -51,6 +51,7 @@ void validate(const MaxwellSlip::Params& p) {
 
 MaxwellSlip::MaxwellSlip(Params params) : params_(std::move(params)) {
   validate(params_);
+  sign_ = params_.orientation == Orientation::counter_clockwise ? -1.0 : 1.0;
   slip_.resize(size());
   for (std::size_t i = 0; i < size(); ++i)
     slip_[i] = params_.break_away[i] / params_.stiffness[i];
@@ -79,10 +80,18 @@ MaxwellSlip::State MaxwellSlip::make_state(std::vector<double> deflection, doubl
 double MaxwellSlip::output(const State& state) const {
   require_same_size(state.deflection.size(), "Maxwell-slip state deflection", size(),
                     "Maxwell-slip stiffness k");
-  double force = params_.offset + params_.linear_stiffness * state.input;
+  double elements = 0.0;
   for (std::size_t i = 0; i < size(); ++i)
-    force += params_.stiffness[i] * state.deflection[i];
-  return force;
+    elements += params_.stiffness[i] * state.deflection[i];
+  return params_.offset + params_.linear_stiffness * state.input + sign_ * elements;
+}
+
+bool MaxwellSlip::is_invertible() const {
+  double total = 0.0;
+  for (double k : params_.stiffness)
+    total += k;
+  // Slopes just after a reversal (no element slips) and once every element slips.
+  return params_.linear_stiffness + sign_ * total > 0.0 && params_.linear_stiffness > 0.0;
 }
 
 PrandtlIshlinskii MaxwellSlip::to_prandtl_ishlinskii() const {
@@ -91,8 +100,8 @@ PrandtlIshlinskii MaxwellSlip::to_prandtl_ishlinskii() const {
   pi.weights.push_back(params_.linear_stiffness);
   for (std::size_t i = 0; i < size(); ++i) {
     pi.thresholds.push_back(slip_[i]);
-    pi.weights.push_back(-params_.stiffness[i]);
-    pi.weights[0] += params_.stiffness[i];
+    pi.weights.push_back(-sign_ * params_.stiffness[i]);
+    pi.weights[0] += sign_ * params_.stiffness[i];
   }
   pi.offset = params_.offset;
   return PrandtlIshlinskii(std::move(pi));
@@ -107,6 +116,17 @@ PrandtlIshlinskii::State MaxwellSlip::prandtl_ishlinskii_state(const State& stat
   for (double delta : state.deflection)
     play.push_back(state.input - delta);
   return to_prandtl_ishlinskii().make_state(std::move(play));
+}
+
+std::string_view orientation_name(MaxwellSlip::Orientation orientation) {
+  return orientation == MaxwellSlip::Orientation::clockwise ? "clockwise" : "counter-clockwise";
+}
+
+MaxwellSlip::Orientation parse_orientation(std::string_view text, std::string_view what) {
+  if (text == "clockwise") return MaxwellSlip::Orientation::clockwise;
+  if (text == "counter-clockwise") return MaxwellSlip::Orientation::counter_clockwise;
+  throw Error(fmt::format("{} = \"{}\" must be \"clockwise\" or \"counter-clockwise\"", what, text),
+              std::string(what));
 }
 
 }  // namespace hyst

@@ -29,6 +29,11 @@ ModifiedPrandtlIshlinskii::ModifiedPrandtlIshlinskii(Params params)
   if (!std::isfinite(params_.offset)) {
     throw Error(fmt::format("modified PI offset = {} is not finite", params_.offset), "offset");
   }
+  if (!(params_.output_min < params_.output_max)) {
+    throw Error(fmt::format("modified PI output_min = {} must be < output_max = {}",
+                            params_.output_min, params_.output_max),
+                "output_min");
+  }
 }
 
 }  // namespace hyst

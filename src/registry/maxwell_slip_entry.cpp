@@ -26,7 +26,8 @@ struct MaxwellSlipCodec {
     return {{"stiffness", p.stiffness},
             {"break_away", p.break_away},
             {"linear_stiffness", p.linear_stiffness},
-            {"offset", p.offset}};
+            {"offset", p.offset},
+            {"orientation", orientation_name(p.orientation)}};
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"deflection", state.deflection}, {"input", state.input}};
@@ -40,9 +41,10 @@ struct MaxwellSlipCodec {
   static std::string describe(const Model& model) {
     const auto& p = model.params();
     std::string text = fmt::format(
-        "Maxwell-slip model: {} elasto-slide elements, linear stiffness {}, offset {}, {}"
-        "invertible\n   i    stiffness k_i   break-away f_i   slip f_i/k_i\n",
-        model.size(), p.linear_stiffness, p.offset, model.is_invertible() ? "" : "not ");
+        "Maxwell-slip model: {} elasto-slide elements, linear stiffness {}, offset {}, {} loop, "
+        "{}invertible\n   i    stiffness k_i   break-away f_i   slip f_i/k_i\n",
+        model.size(), p.linear_stiffness, p.offset, orientation_name(p.orientation),
+        model.is_invertible() ? "" : "not ");
     for (std::size_t i = 0; i < model.size(); ++i) {
       text += fmt::format("{:4}  {:14.8g}  {:14.8g}  {:14.8g}\n", i, p.stiffness[i],
                           p.break_away[i], model.slip_displacements()[i]);
@@ -54,8 +56,10 @@ struct MaxwellSlipCodec {
                                                       const InverseLimits& limits) {
     if (!model.is_invertible()) {
       throw Error(
-          "the Maxwell-slip model saturates at offset +- sum f_i and has no inverse unless "
-          "linear_stiffness > 0");
+          "the Maxwell-slip model has no inverse unless its slope just after a reversal is > 0: "
+          "linear_stiffness > 0 (clockwise) or linear_stiffness > sum of stiffness "
+          "(counter-clockwise)",
+          "linear_stiffness");
     }
     InversePrandtlIshlinskii inverse(model.to_prandtl_ishlinskii(),
                                      {limits.input_min, limits.input_max});
@@ -76,6 +80,10 @@ MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_j
   params.break_away = fields.numbers("break_away");
   params.linear_stiffness = fields.number_or("linear_stiffness", 0.0);
   params.offset = fields.number_or("offset", 0.0);
+  if (fields.has("orientation")) {
+    params.orientation =
+        parse_orientation(fields.string("orientation"), fields.path_of("orientation"));
+  }
   fields.finish();
   return params;
 }
@@ -98,6 +106,10 @@ FitOutcome fit(const FitRequest& request) {
   options.fit_linear_stiffness =
       fields.boolean_or("fit_linear_stiffness", options.fit_linear_stiffness);
   options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
+  const auto orientation = fields.string_or("orientation", "auto");
+  if (orientation != "auto") {
+    options.orientation = parse_orientation(orientation, fields.path_of("orientation"));
+  }
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_maxwell_slip(request.input, request.output, options);
@@ -117,8 +129,8 @@ ModelEntry maxwell_slip_entry() {
   ModelEntry entry;
   entry.name = std::string(MaxwellSlipCodec::name);
   entry.description =
-      "Maxwell-slip: parallel elasto-slide elements (stop operators); inverse via the PI form "
-      "when linear_stiffness > 0; stiffnesses by NNLS";
+      "Maxwell-slip: parallel elasto-slide elements (stop operators), clockwise or "
+      "counter-clockwise loops; inverse via the PI form; stiffnesses by NNLS";
   entry.parameters = {
       {"stiffness", "array of numbers", "force / position units", "k_i > 0 of each element"},
       {"break_away", "array of numbers", "force units",
@@ -126,6 +138,9 @@ ModelEntry maxwell_slip_entry() {
       {"linear_stiffness", "number", "force / position units",
        "k_lin >= 0 of a parallel spring (default 0); > 0 makes the model invertible"},
       {"offset", "number", "force units", "F_off (default 0)"},
+      {"orientation", "string", "",
+       "\"clockwise\" (default: F = F_off + k_lin x + sum k_i delta_i) or \"counter-clockwise\" "
+       "(F = F_off + k_lin x - sum k_i delta_i)"},
   };
   entry.fit_options = {
       {"elements", "whole number", "", "N elements when slip_displacements is not given (10)"},
@@ -133,6 +148,9 @@ ModelEntry maxwell_slip_entry() {
        "fixed f_i/k_i, increasing (default: uniform up to half the range)"},
       {"fit_linear_stiffness", "boolean", "", "fit k_lin >= 0 (true)"},
       {"fit_offset", "boolean", "", "fit the force offset (true)"},
+      {"orientation", "string", "",
+       "loop orientation in the (x, F) plane: \"auto\" (default: the sign of the enclosed "
+       "area, clockwise when the area is 0), \"clockwise\" or \"counter-clockwise\""},
   };
   entry.create = &create;
   entry.fit = &fit;

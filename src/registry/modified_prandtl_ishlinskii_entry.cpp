@@ -1,6 +1,8 @@
 // Registry entry of the modified Prandtl-Ishlinskii model: its model-file form, its analytic
 // inverse and its constrained least-squares fitter.
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "held_out_validation.hpp"
@@ -23,12 +25,16 @@ struct ModifiedPiCodec {
 
   static nlohmann::json params_to_json(const Model& model) {
     const auto& p = model.params();
-    return {{"thresholds", p.pi.thresholds},
-            {"weights", p.pi.weights},
-            {"pi_offset", p.pi.offset},
-            {"dead_zone_thresholds", p.dead_zone.thresholds},
-            {"dead_zone_weights", p.dead_zone.weights},
-            {"offset", p.offset}};
+    nlohmann::json json{{"thresholds", p.pi.thresholds},
+                        {"weights", p.pi.weights},
+                        {"pi_offset", p.pi.offset},
+                        {"dead_zone_thresholds", p.dead_zone.thresholds},
+                        {"dead_zone_weights", p.dead_zone.weights},
+                        {"offset", p.offset}};
+    // Infinite limits (no clamp) are left out: JSON has no infinity.
+    if (std::isfinite(p.output_min)) json["output_min"] = p.output_min;
+    if (std::isfinite(p.output_max)) json["output_max"] = p.output_max;
+    return json;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return play_state_to_json(state);
@@ -78,6 +84,8 @@ ModifiedPrandtlIshlinskii::Params modified_prandtl_ishlinskii_params_from_json(
   params.dead_zone.thresholds = fields.numbers("dead_zone_thresholds");
   params.dead_zone.weights = fields.numbers("dead_zone_weights");
   params.offset = fields.number_or("offset", 0.0);
+  params.output_min = fields.number_or("output_min", params.output_min);
+  params.output_max = fields.number_or("output_max", params.output_max);
   fields.finish();
   return params;
 }
@@ -117,6 +125,8 @@ FitOutcome fit(const FitRequest& request) {
   }
   if (fields.has("output_offset")) options.output_offset = fields.number("output_offset");
   options.min_weight = fields.number_or("min_weight", options.min_weight);
+  options.clamp_output = fields.boolean_or("clamp_output", options.clamp_output);
+  options.output_margin = fields.number_or("output_margin", options.output_margin);
   if (fields.has("initial_state")) {
     options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
   }
@@ -153,6 +163,10 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
        "d_i, increasing, one of them 0"},
       {"dead_zone_weights", "array of numbers", "", "g_i; invertible iff outward partial sums > 0"},
       {"offset", "number", "output units", "y_off added after the dead zones (default 0)"},
+      {"output_min", "number", "output units",
+       "lower limit the output is clamped to (default: none; a fit sets the record's minimum)"},
+      {"output_max", "number", "output units",
+       "upper limit the output is clamped to (default: none; a fit sets the record's maximum)"},
   };
   entry.fit_options = {
       {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
@@ -163,6 +177,10 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
       {"output_offset", "number", "output units", "y_off (default: mid-range of the output)"},
       {"min_weight", "number", "", "relative lower bound of p_0 and of the map's slopes (1e-6)"},
       {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
+      {"clamp_output", "boolean", "",
+       "limit the output to the fitted record's output range (true); false = no limits"},
+      {"output_margin", "number", "",
+       "widen those limits by this fraction of the output range on each side (0)"},
   };
   entry.create = &create;
   entry.fit = &fit;

@@ -280,6 +280,11 @@ TEST_F(ExportCTest, InversePrandtlIshlinskiiWithInputLimits) {
 
 TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiAndItsInverse) {
   check_everything({example_document("modified_pi"), -2.0, 2.0}, kFloatBound);
+  // With output limits inside the reached range, so that the clamp acts.
+  auto limited = example_document("modified_pi");
+  limited["params"]["output_min"] = -0.3;
+  limited["params"]["output_max"] = 0.4;
+  check_everything({limited, -2.0, 2.0}, kFloatBound);
 }
 
 TEST_F(ExportCTest, GeneralizedPrandtlIshlinskiiAndItsInverseForEveryEnvelope) {

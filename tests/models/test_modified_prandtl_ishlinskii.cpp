@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,6 +16,7 @@
 #include "hyst/identify/fit_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
 
 namespace hyst {
 namespace {
@@ -150,6 +153,54 @@ TEST(ModifiedPrandtlIshlinskii, FitRecoversAModelWithTheSameGrids) {
   const auto generic = fit_modified_prandtl_ishlinskii(v, y, {.operators = 8, .dead_zones = 4});
   EXPECT_TRUE(generic.model.is_invertible());
   EXPECT_LT(generic.report.fit.nrmse_percent, 2);
+}
+
+TEST(ModifiedPrandtlIshlinskii, OutputLimitsClampByHand) {
+  // Identity PI (y = v) and identity dead zone, offset 0.1: y = clamp(v + 0.1, -0.5, 0.7).
+  const ModifiedPrandtlIshlinskii model({.pi = {.thresholds = {0}, .weights = {1}},
+                                         .dead_zone = {{0}, {1}},
+                                         .offset = 0.1,
+                                         .output_min = -0.5,
+                                         .output_max = 0.7});
+  auto state = model.initial_state();
+  EXPECT_NEAR(model.step(state, 0.2), 0.3, 1e-15);
+  EXPECT_EQ(model.step(state, 2.0), 0.7);
+  EXPECT_EQ(model.step(state, -3.0), -0.5);
+  EXPECT_HYST_ERROR(ModifiedPrandtlIshlinskii({.pi = {.thresholds = {0}, .weights = {1}},
+                                               .dead_zone = {{0}, {1}},
+                                               .output_min = 1,
+                                               .output_max = 1}),
+                    "output_min = 1 must be < output_max = 1");
+}
+
+TEST(ModifiedPrandtlIshlinskii, FitOnHalfTheRangeStaysBoundedOnTheFullRange) {
+  // A saturating record, y = tanh(2 PI[v]) (a PI model with positive weights followed by tanh,
+  // not a modified PI model), fitted on the first half of a sweep whose amplitude grows from 0.1
+  // to 0.55 and predicted over the whole sweep (amplitude up to 1, twice the fitted input range).
+  // The prediction must stay within 3x the record's output range, and the fitted limits are the
+  // fit part's output extremes.
+  const PrandtlIshlinskii pi({.thresholds = {0, 0.2, 0.4, 0.6}, .weights = {0.8, 0.4, 0.3, 0.2}});
+  std::vector<double> v(4000);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const double t = static_cast<double>(k);
+    v[k] = (0.1 + 0.9 * t / 4000.0) * std::sin(2.0 * std::numbers::pi * t / 200.0);
+  }
+  auto pi_state = pi.initial_state();
+  std::vector<double> y = simulate(pi, pi_state, v);
+  for (double& value : y)
+    value = std::tanh(2.0 * value);
+  const std::span<const double> fit_v(v.data(), 2000), fit_y(y.data(), 2000);
+  const auto [fit_min, fit_max] = std::minmax_element(fit_y.begin(), fit_y.end());
+  const auto fit = fit_modified_prandtl_ishlinskii(fit_v, fit_y);
+  EXPECT_EQ(fit.model.params().output_min, *fit_min);
+  EXPECT_EQ(fit.model.params().output_max, *fit_max);
+  auto state = fit.initial_state;
+  const auto predicted = simulate(fit.model, state, v);
+  const auto [y_min, y_max] = std::minmax_element(y.begin(), y.end());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    worst = std::max(worst, std::abs(predicted[k] - y[k]));
+  EXPECT_LT(worst, 3.0 * (*y_max - *y_min));
 }
 
 }  // namespace

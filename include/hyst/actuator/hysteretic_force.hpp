@@ -13,12 +13,12 @@
 //!
 //! The inverse of each model (InverseModel<H>): analytic where the model has one - IGPI for GPI,
 //! the inverse PI for PI and for Maxwell-slip (a stop-type PI model, invertible iff
-//! linear_stiffness > 0), Kuhnen's inverse for the modified PI - and otherwise the bracketed
-//! numerical inverse: InversePreisach for Preisach, NumericalInverse<H> for every other model
-//! (KP, Ikuta SMA, Bouc-Wen), which needs a monotone one-step map and a preview() or a trivially
-//! copyable state (numerical_inverse.hpp). Adding a model: one alternative in AnyHysteresis and its
-//! name and parameter parser in hysteretic_force.cpp; an InverseModel specialisation only for an
-//! analytic inverse.
+//! linear_stiffness > 0, or > sum k_i for counter-clockwise loops), Kuhnen's inverse for the
+//! modified PI - and otherwise the bracketed numerical inverse: InversePreisach for Preisach,
+//! NumericalInverse<H> for every other model (KP, Ikuta SMA, Bouc-Wen), which needs a monotone
+//! one-step map and a preview() or a trivially copyable state (numerical_inverse.hpp). Adding a
+//! model: one alternative in AnyHysteresis and its name and parameter parser in
+//! hysteretic_force.cpp; an InverseModel specialisation only for an analytic inverse.
 //!
 //! Not a force model: the rate-dependent PI ("rate_dependent_pi"). Its output depends on the
 //! input rate (through the sample time of the model, not of the actuator) and hyst provides no
@@ -104,8 +104,8 @@ struct InverseModel<Preisach> {
 template <>
 struct InverseModel<MaxwellSlip> {
   using type = InversePrandtlIshlinskii;
-  //! Throws hyst::Error unless linear_stiffness > 0 (without it the force saturates at
-  //! F_off +- sum f_i and has no inverse).
+  //! Throws hyst::Error unless the slope after a reversal is > 0 (maxwell_slip.hpp): without it
+  //! the force saturates or falls and has no inverse.
   static type make(const MaxwellSlip& model, double input_min, double input_max) {
     require_invertible(model);
     return type(model.to_prandtl_ishlinskii(), {input_min, input_max});
@@ -113,8 +113,8 @@ struct InverseModel<MaxwellSlip> {
   static void require_invertible(const MaxwellSlip& model) {
     if (!model.is_invertible()) {
       throw Error(
-          "a Maxwell-slip force needs linear_stiffness > 0 to be invertible (without it the "
-          "force saturates at offset +- sum of break_away)",
+          "a Maxwell-slip force needs linear_stiffness > 0 to be invertible (counter-clockwise: "
+          "linear_stiffness > the sum of stiffness)",
           "linear_stiffness");
     }
   }

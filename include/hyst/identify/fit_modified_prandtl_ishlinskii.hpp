@@ -45,6 +45,10 @@ struct ModifiedPiFitOptions {
   double min_weight = 1e-6;  //!< relative lower bound of p_0 and of the slopes of S', > 0
   //! virgin (plays at 0) or periodic (the record is one period in steady state).
   PiFitOptions::InitialState initial_state = PiFitOptions::InitialState::virgin;
+  //! Set output_min/output_max (modified_prandtl_ishlinskii.hpp) to the fit record's output range
+  //! [y_lo, y_hi] widened by output_margin (y_hi - y_lo) on each side; false = no limits.
+  bool clamp_output = true;
+  double output_margin = 0.0;      //!< >= 0, fraction of the fit record's output range
   double validate_fraction = 0.0;  //!< held out at the end of the record, [0, 1)
 };
 

@@ -5,19 +5,25 @@
 //! f_i), optionally with a linear spring k_lin in parallel.
 //!
 //!     delta_i[k] = min(D_i, max(-D_i, delta_i[k-1] + x[k] - x[k-1])),   D_i = f_i / k_i
-//!     F[k]       = F_off + k_lin x[k] + sum_i k_i delta_i[k]
+//!     F[k]       = F_off + k_lin x[k] + s sum_i k_i delta_i[k]
 //!
 //! Each element is a stop operator of half-width D_i (its spring deflection), so the model is the
-//! stop-type Prandtl-Ishlinskii model; with k_lin = 0 it saturates at F_off +- sum f_i. Written
-//! with play operators (E_D = x - F_D) it is a classical PI model:
+//! stop-type Prandtl-Ishlinskii model; with k_lin = 0 it saturates at F_off +- sum f_i. The sign s
+//! is the loop orientation in the (x, F) plane: s = +1 (clockwise, the physical friction force:
+//! the force leads, its rising branch lies above the falling one) or s = -1 (counter-clockwise:
+//! the force lags, as a reaction force or the output of a PI model with positive weights does).
+//! Written with play operators (E_D = x - F_D) it is a classical PI model:
 //!
-//!     F = F_off + (k_lin + sum k_i) x - sum_i k_i F_{D_i}[x],   play states w_i = x - delta_i
+//!     F = F_off + (k_lin + s sum k_i) x - s sum_i k_i F_{D_i}[x],   play states w_i = x - delta_i
 //!
-//! whose partial sums are k_lin + sum_{i > j} k_i; it is therefore invertible (analytically, by
-//! the PI inverse) iff k_lin > 0. to_prandtl_ishlinskii() gives that PI model.
+//! whose slope is k_lin + s sum k_i just after a reversal and k_lin once every element slips; it
+//! is therefore invertible (analytically, by the PI inverse) iff both are > 0: k_lin > 0
+//! (clockwise) or k_lin > sum k_i (counter-clockwise). to_prandtl_ishlinskii() gives that PI
+//! model.
 //!
 //! Parameters: stiffness k_i > 0 [force/position units], break-away forces f_i > 0 [force units],
-//! listed so that the slip displacements D_i = f_i/k_i strictly increase; k_lin >= 0; F_off.
+//! listed so that the slip displacements D_i = f_i/k_i strictly increase; k_lin >= 0; F_off;
+//! orientation (default clockwise, the classical model).
 //! State: the deflections delta_i [position units] and the previous position x[k-1]; initial:
 //! all delta_i = 0 at x = 0 (relaxed springs). Rate independent (no viscous term); the
 //! generalised Maxwell-slip with velocity-dependent slip is out of scope.
@@ -27,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string_view>
 #include <vector>
 
 #include "hyst/core/assert.hpp"
@@ -36,11 +43,15 @@ namespace hyst {
 
 class MaxwellSlip {
  public:
+  //! Sense in which the (x, F) loop is traversed; fixes the sign s of the element forces.
+  enum class Orientation { clockwise, counter_clockwise };
+
   struct Params {
     std::vector<double> stiffness{};   //!< k_i > 0 [force/position units]
     std::vector<double> break_away{};  //!< f_i > 0 [force units], f_i/k_i increasing
     double linear_stiffness = 0.0;     //!< k_lin >= 0 [force/position units]
     double offset = 0.0;               //!< F_off [force units]
+    Orientation orientation = Orientation::clockwise;  //!< s = +1 clockwise, -1 counter-clockwise
   };
   struct State {
     std::vector<double> deflection;  //!< delta_i [position units], |delta_i| <= D_i
@@ -54,7 +65,10 @@ class MaxwellSlip {
   std::size_t size() const { return params_.stiffness.size(); }
   //! D_i = f_i / k_i [position units].
   const std::vector<double>& slip_displacements() const { return slip_; }
-  bool is_invertible() const { return params_.linear_stiffness > 0.0; }
+  //! Slopes k_lin + s sum k_i (after a reversal) and k_lin (all slipping) are > 0 (file comment).
+  bool is_invertible() const;
+  //! s of the file comment: +1 clockwise, -1 counter-clockwise.
+  double element_sign() const { return sign_; }
 
   //! Relaxed springs at x = 0.
   State initial_state() const { return state_at_rest(0.0); }
@@ -78,18 +92,24 @@ class MaxwellSlip {
     const double* __restrict k = params_.stiffness.data();
     const double* __restrict limit = slip_.data();
     double* __restrict delta = state.deflection.data();
-    double force = params_.offset + params_.linear_stiffness * input;
+    double elements = 0.0;
     for (std::size_t i = 0; i < slip_.size(); ++i) {
       delta[i] = std::clamp(delta[i] + move, -limit[i], limit[i]);
-      force += k[i] * delta[i];
+      elements += k[i] * delta[i];
     }
     state.input = input;
-    return force;
+    return params_.offset + params_.linear_stiffness * input + sign_ * elements;
   }
 
  private:
   Params params_;
   std::vector<double> slip_;
+  double sign_ = 1.0;
 };
+
+//! "clockwise" / "counter-clockwise" (the model-file and fit-option spelling).
+std::string_view orientation_name(MaxwellSlip::Orientation orientation);
+//! Throws hyst::Error naming `what` unless text is "clockwise" or "counter-clockwise".
+MaxwellSlip::Orientation parse_orientation(std::string_view text, std::string_view what);
 
 }  // namespace hyst
