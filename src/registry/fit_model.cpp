@@ -3,6 +3,7 @@
 // the yardstick of reference predictors (identify/reference_predictors.hpp).
 
 #include <exception>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -81,17 +82,17 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
 
 FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   if (!entry.can_fit()) throw Error(fmt::format("model '{}' has no fitter", entry.name));
-  data::PreparedRecord prepared{{request.input.begin(), request.input.end()},
-                                {request.output.begin(), request.output.end()},
-                                {}};
-  if (request.preprocessing.any()) {
-    prepared = data::preprocess(request.input, request.output, request.preprocessing);
-  }
+  // The record as prepared, or as given when there is nothing to prepare (no copy).
+  const bool prepare = request.preprocessing.any();
+  data::PreparedRecord prepared;
+  if (prepare) prepared = data::preprocess(request.input, request.output, request.preprocessing);
+  const std::span<const double> fit_input = prepare ? prepared.input : request.input;
+  const std::span<const double> fit_output = prepare ? prepared.output : request.output;
   // The fitter sees the fit record alone (with its held-out fraction); a separate validation
   // record is predicted here, by the one rule every model follows (validation_rule.hpp).
   FitRequest fit_request = request;
-  fit_request.input = prepared.input;
-  fit_request.output = prepared.output;
+  fit_request.input = fit_input;
+  fit_request.output = fit_output;
   fit_request.validation_input = {};
   fit_request.validation_output = {};
 
@@ -99,14 +100,15 @@ FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   // too; the choice of cycles and the resampling concern the fit alone. A held-out fraction is
   // the end of the prepared record and so prepared with it.
   std::vector<std::string> steps;
-  data::PreparedRecord validation{
-      {request.validation_input.begin(), request.validation_input.end()},
-      {request.validation_output.begin(), request.validation_output.end()},
-      {}};
   const bool separate_record = !request.validation_input.empty();
-  if (separate_record && request.preprocessing.any()) {
+  data::PreparedRecord validation;
+  std::span<const double> validation_input = request.validation_input;
+  std::span<const double> validation_output = request.validation_output;
+  if (separate_record && prepare) {
     validation = data::prepare_validation(request.validation_input, request.validation_output,
                                           request.preprocessing);
+    validation_input = validation.input;
+    validation_output = validation.output;
     add_steps(steps, "fit record: ", prepared.steps);
     add_steps(steps, "validation record: ", validation.steps);
   } else if (request.validate_fraction > 0.0) {
@@ -118,16 +120,15 @@ FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   outcome.report.preprocessing = std::move(steps);
   const bool fitted = outcome.model && outcome.report.termination != Termination::failed;
   if (separate_record && fitted) {
-    outcome.report.validation = validate_on_record(*outcome.model, prepared.input, validation.input,
-                                                   validation.output, request.validation);
+    outcome.report.validation = validate_on_record(*outcome.model, fit_input, validation_input,
+                                                   validation_output, request.validation);
     outcome.report.validation_rule = describe(request.validation);
   } else if (request.validate_fraction > 0.0) {
     outcome.report.validation_rule =
         fmt::format("last {:.4g} % of the record, continued from the end of the fit part",
                     100.0 * request.validate_fraction);
   }
-  judge_fit(outcome, {prepared.input, prepared.output, validation.input, validation.output},
-            request);
+  judge_fit(outcome, {fit_input, fit_output, validation_input, validation_output}, request);
   return outcome;
 }
 

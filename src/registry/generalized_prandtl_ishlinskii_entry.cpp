@@ -132,11 +132,7 @@ GpiFitOptions fit_options_from_json(const FitRequest& request) {
 
 FitOutcome fit(const FitRequest& request) {
   const auto options = fit_options_from_json(request);
-  auto result = request.validation_input.empty()
-                    ? fit_generalized_prandtl_ishlinskii(request.input, request.output, options)
-                    : fit_generalized_prandtl_ishlinskii(request.input, request.output,
-                                                         request.validation_input,
-                                                         request.validation_output, options);
+  auto result = fit_generalized_prandtl_ishlinskii(request.input, request.output, options);
   return {
       std::make_unique<ModelAdapter<GpiCodec<TanhEnvelope>>>(result.model, result.initial_state),
       std::move(result.report)};

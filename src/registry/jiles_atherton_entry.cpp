@@ -102,11 +102,7 @@ FitOutcome fit(const FitRequest& request) {
   const auto n_fit = static_cast<std::size_t>(
       std::round(static_cast<double>(request.input.size()) * (1.0 - request.validate_fraction)));
   const BhLoop record{request.input.first(n_fit), request.output.first(n_fit)};
-  std::vector<BhLoop> validation;
-  if (!request.validation_input.empty()) {
-    validation.push_back({request.validation_input, request.validation_output});
-  }
-  auto result = fit_jiles_atherton(std::span(&record, 1), validation, options);
+  auto result = fit_jiles_atherton(std::span(&record, 1), {}, options);
   if (n_fit < request.input.size()) {
     // The held-out tail continues the simulation of the whole record.
     const auto b = simulate_bh_loop(result.model, request.input, options.periodic);

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include "held_out_validation.hpp"
 #include "hyst/identify/fit_krasnoselskii_pokrovskii.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
 #include "model_adapter.hpp"
@@ -79,7 +78,6 @@ FitOutcome fit(const FitRequest& request) {
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_krasnoselskii_pokrovskii(request.input, request.output, options);
-  add_held_out_validation(request, result.model, result.model.initial_state(), result.report);
   auto initial = result.model.initial_state();
   return {std::make_unique<ModelAdapter<KpCodec>>(std::move(result.model), std::move(initial)),
           std::move(result.report)};

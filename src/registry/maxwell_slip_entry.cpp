@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include "held_out_validation.hpp"
 #include "hyst/identify/fit_maxwell_slip.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/models/maxwell_slip.hpp"
@@ -113,11 +112,6 @@ FitOutcome fit(const FitRequest& request) {
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_maxwell_slip(request.input, request.output, options);
-  if (!request.validation_input.empty()) {
-    add_held_out_validation(request, result.model,
-                            result.model.state_at_rest(request.validation_input.front()),
-                            result.report);
-  }
   return {std::make_unique<ModelAdapter<MaxwellSlipCodec>>(std::move(result.model),
                                                            std::move(result.initial_state)),
           std::move(result.report)};

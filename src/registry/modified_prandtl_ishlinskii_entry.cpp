@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "held_out_validation.hpp"
 #include "hyst/identify/fit_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
@@ -133,15 +132,6 @@ FitOutcome fit(const FitRequest& request) {
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_modified_prandtl_ishlinskii(request.input, request.output, options);
-  // A held-out record starts like the fitted one: virgin, or in its own periodic state.
-  const bool periodic = options.initial_state == PiFitOptions::InitialState::periodic;
-  add_held_out_validation(
-      request, result.model,
-      periodic && !request.validation_input.empty()
-          ? result.model.make_state(
-                pi_periodic_state(result.model.hysteresis(), request.validation_input).play)
-          : result.model.initial_state(),
-      result.report);
   return {std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model),
                                                           std::move(result.initial_state)),
           std::move(result.report)};

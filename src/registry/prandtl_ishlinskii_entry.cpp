@@ -105,11 +105,7 @@ PiFitOptions fit_options_from_json(const FitRequest& request) {
 
 FitOutcome fit(const FitRequest& request) {
   const auto options = fit_options_from_json(request);
-  auto result =
-      request.validation_input.empty()
-          ? fit_prandtl_ishlinskii(request.input, request.output, options)
-          : fit_prandtl_ishlinskii(request.input, request.output, request.validation_input,
-                                   request.validation_output, options);
+  auto result = fit_prandtl_ishlinskii(request.input, request.output, options);
   return {std::make_unique<PrandtlIshlinskiiAdapter>(result.model, result.initial_state),
           std::move(result.report)};
 }

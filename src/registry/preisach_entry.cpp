@@ -131,15 +131,6 @@ FitOutcome fit(const FitRequest& request) {
   options.validate_fraction = request.validate_fraction;
 
   auto result = fit_preisach_weights(request.input, request.output, options);
-  if (!request.validation_input.empty()) {
-    // A held-out record starts from the model's initial state, like the fitted one.
-    auto state = result.model.initial_state();
-    std::vector<double> predicted(request.validation_input.size());
-    simulate(result.model, state, request.validation_input, predicted);
-    require_same_size(request.validation_input.size(), "validation input",
-                      request.validation_output.size(), "validation output");
-    result.report.validation = error_metrics(request.validation_output, predicted);
-  }
   auto initial = result.model.initial_state();
   return {std::make_unique<PreisachAdapter>(std::move(result.model), std::move(initial)),
           std::move(result.report)};

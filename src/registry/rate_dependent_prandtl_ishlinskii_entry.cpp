@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include "held_out_validation.hpp"
 #include "hyst/identify/fit_rate_dependent_prandtl_ishlinskii.hpp"
 #include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
 #include "model_adapter.hpp"
@@ -77,7 +76,6 @@ FitOutcome fit(const FitRequest& request) {
   fields.finish();
   options.validate_fraction = request.validate_fraction;
   auto result = fit_rate_dependent_prandtl_ishlinskii(request.input, request.output, options);
-  add_held_out_validation(request, result.model, result.model.initial_state(), result.report);
   auto initial = result.model.initial_state();
   return {std::make_unique<ModelAdapter<RateDependentPiCodec>>(std::move(result.model),
                                                                std::move(initial)),
