@@ -24,15 +24,13 @@ print(model.describe())
 # Each reversal lies inside the previous one: a staircase of internal loops.
 grid = signals.TimeGrid(2000, 1e-3)
 v = signals.generate(grid, signals.DecayingSine(amplitude=1.2, frequency=5.0, time_constant=0.6))
-y = model.simulate(v)
+y, final_state = model.simulate(v, return_state=True)  # the model itself never changes
 print(f"output range [{y.min():g}, {y.max():g}] (saturation at +-231)")
-print(f"memory after the run: {model.state['memory'][:6]} ...")
+print(f"memory after the run: {final_state['memory'][:6]} ...")
 
 # The numerical inverse, started from the virgin model's state, reproduces the outputs.
-model.reset()
 inverse = model.inverse(-1.0, 1.0)
 v_back, report = inverse.invert(y)
-model.reset()
 y_again = model.simulate(v_back)
 error = np.abs(y_again - y).max()
 print(f"inverse: {report}; max |P[P^-1[y]] - y| = {error:.3g}")

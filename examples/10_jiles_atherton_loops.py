@@ -22,11 +22,11 @@ B = hyst.io.read_mat_columns(data / "B_MnZn_ferrite.mat", "BmeasT")
 
 model, report = hyst.fit("jiles_atherton", H[-1], B[-1], periodic=True, max_iterations=40)
 print(report.brief())
+model.reset()  # every run below starts demagnetised
 
 
 def steady_loop(h):
     """B along one loop in steady state: demagnetised, then the loop twice, the second kept."""
-    model.reset()
     return model.simulate(np.concatenate([h, h]))[len(h):]
 
 
@@ -36,7 +36,6 @@ for h, b in zip(H, B):
     errors.append(nrmse)
     print(f"loop +-{np.abs(h).max():5.1f} A/m: NRMSE {100 * nrmse:.2f} %")
 
-model.reset()
 path = np.concatenate([np.linspace(a, b_, 50) for a, b_ in
                        [(0, 80), (80, -80), (-80, 80), (80, 20), (20, 50), (50, 20), (20, -10),
                         (-10, 30), (30, -80)]])

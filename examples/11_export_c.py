@@ -10,7 +10,6 @@ next to the repository (../shared/data) or in $HYST_SHARED_DATA_DIR; gcc must be
 Run: PYTHONPATH=build/python python3 examples/11_export_c.py
 """
 
-import copy
 import os
 import subprocess
 import sys
@@ -75,7 +74,7 @@ with tempfile.TemporaryDirectory() as folder:
 
 # 5. The library on the same trajectory.
 library_voltage, _ = model.inverse().invert(desired)
-library_response = copy.copy(model).simulate(library_voltage)
+library_response = model.simulate(library_voltage)
 voltage_difference = np.max(np.abs(c_voltage - library_voltage))
 response_difference = np.max(np.abs(c_response - library_response))
 tracking_error = np.max(np.abs(c_response - desired))

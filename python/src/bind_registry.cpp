@@ -2,8 +2,11 @@
 // files, and fitting through the registry.
 
 #include <limits>
+#include <memory>
 #include <optional>
+#include <span>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -38,6 +41,47 @@ nlohmann::json info_json(const py::handle& info) {
   if (!json.is_object()) throw Error("info must be a dict");
   return json;
 }
+
+// simulate() of a model into a new array, without the GIL.
+py::array_t<double> simulate_into(DynamicModel& model, const InputArray& input) {
+  const auto samples = as_span(input, "input");
+  std::vector<double> output(samples.size());
+  {
+    py::gil_scoped_release release;
+    model.simulate(samples, output);
+  }
+  return to_array(std::move(output));
+}
+
+// invert() of an inverse into a new array: (inputs, InverseReport).
+py::tuple invert_into(DynamicInverse& inverse, const InputArray& targets) {
+  const auto samples = as_span(targets, "targets");
+  std::vector<double> inputs(samples.size());
+  InverseReport report;
+  {
+    py::gil_scoped_release release;
+    report = inverse.invert(samples, inputs);
+  }
+  return py::make_tuple(to_array(std::move(inputs)), report);
+}
+
+// The stateful objects of Model.runner() and Inverse.runner(): a copy that advances, and the
+// copy it started as (for reset()).
+struct ModelRunner {
+  explicit ModelRunner(std::unique_ptr<DynamicModel> running)
+      : model(std::move(running)), start(model->clone()) {}
+  void reset() { model = start->clone(); }
+  std::unique_ptr<DynamicModel> model;
+  std::unique_ptr<DynamicModel> start;
+};
+
+struct InverseRunner {
+  explicit InverseRunner(std::unique_ptr<DynamicInverse> running)
+      : inverse(std::move(running)), start(inverse->clone()) {}
+  void reset() { inverse = start->clone(); }
+  std::unique_ptr<DynamicInverse> inverse;
+  std::unique_ptr<DynamicInverse> start;
+};
 
 }  // namespace
 
@@ -80,32 +124,101 @@ void bind_registry(py::module_& module) {
       "model_entry", [](std::string_view name) { return &registry().find(name); }, "name"_a,
       py::return_value_policy::reference, "The registry entry of a model; hyst.Error if unknown.");
 
-  py::class_<DynamicInverse>(module, "Inverse",
-                             "The inverse of a hyst.Model with its own running state (see "
-                             "Model.inverse()).")
+  py::class_<InverseRunner>(
+      module, "InverseRunner",
+      "An inverse with a running state, for step-by-step use (Inverse.runner()): every call "
+      "continues where the previous one ended.")
       .def(
           "invert",
-          [](DynamicInverse& inverse, const InputArray& targets) {
-            const auto samples = as_span(targets, "targets");
-            std::vector<double> inputs(samples.size());
-            InverseReport report;
-            {
-              py::gil_scoped_release release;
-              report = inverse.invert(samples, inputs);
-            }
-            return py::make_tuple(to_array(std::move(inputs)), report);
+          [](InverseRunner& runner, const InputArray& targets) {
+            return invert_into(*runner.inverse, targets);
           },
           "targets"_a,
-          "Inputs that make the model produce `targets` (the state advances): returns (inputs, "
-          "InverseReport); saturation is reported, not raised.")
+          "Inputs that make the model produce `targets`, continuing from the running state "
+          "(advanced): returns (inputs, InverseReport).")
+      .def(
+          "step",
+          [](InverseRunner& runner, double target) {
+            double input = 0.0;
+            runner.inverse->invert(std::span<const double>(&target, 1),
+                                   std::span<double>(&input, 1));
+            return input;
+          },
+          "target"_a,
+          "The input for one target, advancing the running state (an unreachable target gives "
+          "the nearest reachable input; invert() reports it).")
       .def_property_readonly(
-          "state", [](const DynamicInverse& inverse) { return json_to_python(inverse.state()); });
+          "state",
+          [](const InverseRunner& runner) { return json_to_python(runner.inverse->state()); },
+          "The running state as a dict.")
+      .def("reset", &InverseRunner::reset, "Back to the state the runner started from.");
+
+  py::class_<DynamicInverse>(
+      module, "Inverse",
+      "The inverse of a hyst.Model (Model.inverse()). It never changes: invert() always starts "
+      "from the inverse's start state, consistent with the model state it was made from. For a "
+      "running state use runner().")
+      .def(
+          "invert",
+          [](const DynamicInverse& inverse, const InputArray& targets) {
+            return invert_into(*inverse.clone(), targets);
+          },
+          "targets"_a,
+          "Inputs that make the model produce `targets`, from the inverse's start state (the "
+          "inverse is unchanged): returns (inputs, InverseReport); saturation is reported, not "
+          "raised.")
+      .def(
+          "runner", [](const DynamicInverse& inverse) { return InverseRunner(inverse.clone()); },
+          "A stateful copy for step-by-step use, starting from the inverse's start state.")
+      .def_property_readonly(
+          "state", [](const DynamicInverse& inverse) { return json_to_python(inverse.state()); },
+          "The start state as a dict.");
+
+  py::class_<ModelRunner>(
+      module, "ModelRunner",
+      "A model with a running state, for step-by-step use (Model.runner()): every call "
+      "continues where the previous one ended.")
+      .def(
+          "step",
+          [](ModelRunner& runner, double input) {
+            double output = 0.0;
+            runner.model->simulate(std::span<const double>(&input, 1),
+                                   std::span<double>(&output, 1));
+            return output;
+          },
+          "input"_a, "The output for one input sample, advancing the running state.")
+      .def(
+          "simulate",
+          [](ModelRunner& runner, const InputArray& input) {
+            return simulate_into(*runner.model, input);
+          },
+          "input"_a, "The outputs for `input`, continuing from the running state (advanced).")
+      .def_property(
+          "state", [](const ModelRunner& runner) { return json_to_python(runner.model->state()); },
+          [](ModelRunner& runner, const py::handle& state) {
+            runner.model->set_state(python_to_json(state, "state"));
+          },
+          "The running state as a dict; assigning validates it.")
+      .def("reset", &ModelRunner::reset, "Back to the state the runner started from.")
+      .def(
+          "inverse",
+          [](const ModelRunner& runner, double input_min, double input_max) {
+            return runner.model->inverse({input_min, input_max});
+          },
+          "input_min"_a = -kInfinity, "input_max"_a = kInfinity,
+          "The inverse, started consistently with the running state (e.g. for feedforward "
+          "after a run).")
+      .def(
+          "to_model", [](const ModelRunner& runner) { return runner.model->clone(); },
+          "A hyst.Model whose start state is the running state.");
 
   py::class_<DynamicModel> model(
       module, "Model",
-      "Any registered model with its running state, chosen by name at run time. Parameters and "
+      "Any registered model, chosen by name at run time, with its start state. Parameters and "
       "state are dicts in the model-file form, e.g. Model('pi', {'thresholds': [0, 0.3], "
-      "'weights': [1, 0.5]}).");
+      "'weights': [1, 0.5]}). A Model never changes when it runs: simulate() starts from the "
+      "start state (or a state passed in) every time; runner() gives a stateful copy for "
+      "step-by-step use.");
   model
       .def(py::init(&create_model), "name"_a, "params"_a, "state"_a = py::none(),
            "Builds a registered model; hyst.Error names a bad field (\"params.thresholds[1]: "
@@ -119,20 +232,35 @@ void bind_registry(py::module_& module) {
           [](DynamicModel& m, const py::handle& state) {
             m.set_state(python_to_json(state, "state"));
           },
-          "The running state as a dict; assigning validates it.")
-      .def("reset", &DynamicModel::reset, "Back to the model's default initial state.")
+          "The start state as a dict: where simulate(), runner() and inverse() start, and what "
+          "save_model() writes. Assigning validates it.")
+      .def("reset", &DynamicModel::reset,
+           "Sets the start state to the model's default initial state.")
       .def(
           "simulate",
-          [](DynamicModel& m, const InputArray& input) {
-            const auto samples = as_span(input, "input");
-            std::vector<double> output(samples.size());
-            {
-              py::gil_scoped_release release;
-              m.simulate(samples, output);
-            }
-            return to_array(std::move(output));
+          [](const DynamicModel& m, const InputArray& input, const py::handle& state,
+             bool return_state) -> py::object {
+            const auto run = m.clone();
+            if (!state.is_none()) run->set_state(python_to_json(state, "state"));
+            auto output = simulate_into(*run, input);
+            if (!return_state) return output;
+            return py::make_tuple(output, json_to_python(run->state()));
           },
-          "input"_a, "Runs the model from its current state (advanced); returns the outputs.")
+          "input"_a, "state"_a = py::none(), "return_state"_a = false,
+          "The outputs for `input`, starting from `state` (a dict) or, when it is None, from the "
+          "start state. The model is unchanged, so every call starts afresh; with "
+          "return_state=True returns (outputs, final state dict), and passing that state to the "
+          "next call continues the run.")
+      .def(
+          "runner",
+          [](const DynamicModel& m, const py::handle& state) {
+            auto run = m.clone();
+            if (!state.is_none()) run->set_state(python_to_json(state, "state"));
+            return ModelRunner(std::move(run));
+          },
+          "state"_a = py::none(),
+          "A stateful copy for step-by-step use (ModelRunner), starting from `state` or the start "
+          "state.")
       .def("parameter_count", &DynamicModel::parameter_count)
       .def("describe", &DynamicModel::describe, "A few lines on the model and its parameters.")
       .def("has_inverse", &DynamicModel::has_inverse)
@@ -142,7 +270,7 @@ void bind_registry(py::module_& module) {
             return m.inverse({input_min, input_max});
           },
           "input_min"_a = -kInfinity, "input_max"_a = kInfinity,
-          "The inverse, started consistently with the model's current state.")
+          "The inverse, started consistently with the model's start state (Model.state).")
       .def(
           "to_dict",
           [](const DynamicModel& m, const py::object& info) {

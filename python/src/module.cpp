@@ -169,7 +169,14 @@ PYBIND11_MODULE(hyst, module) {
       "hyst: hysteresis models (relay, play, stop, Prandtl-Ishlinskii), their inverses, test "
       "signals, CSV and MAT files, identification and the model registry.\n\n"
       "Invalid input (parameters, files, NaN samples) raises hyst.Error; numpy float64 arrays "
-      "are used in place, and returned arrays own their memory (no copies).";
+      "are used in place, and returned arrays own their memory (no copies).\n\n"
+      "State: models and inverses never change when they run. simulate() and invert() start "
+      "from a state passed in or, without one, from the object's start state (initial_state() "
+      "for the typed classes; Model.state, the model file's state, for hyst.Model and its "
+      "inverse). What advances is a separate running object: a typed model's State (passed to "
+      "step/simulate/invert), or the ModelRunner / InverseRunner of Model.runner() / "
+      "Inverse.runner(). State dicts are values, read and never written; "
+      "Model.simulate(..., return_state=True) also returns the final state.";
   module.attr("__version__") = HYST_VERSION;
 
   // hyst::Error -> hyst.Error (an Exception) with the message, and the offending parameter field

@@ -30,7 +30,9 @@ def test_exported_modified_pi_matches_the_library(tmp_path):
         "dead_zone_thresholds": [-0.8, 0.0, 0.9], "dead_zone_weights": [0.1, 1.0, -0.2],
         "offset": 0.05})
     rng = np.random.default_rng(3)
-    model.simulate(np.cumsum(rng.normal(0, 0.1, 200)))  # a state that is not the default
+    # A start state that is not the default.
+    _, model.state = model.simulate(np.cumsum(rng.normal(0, 0.1, 200)), return_state=True)
+    assert model.state != hyst.Model(model.name, model.params).state
     files = hyst.export_c(model, tmp_path, prefix="m", source="test")
     assert files["has_inverse"] and files["header"].name == "m.h"
     assert "modified Prandtl-Ishlinskii" in files["source"].read_text()

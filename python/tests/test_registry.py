@@ -41,10 +41,11 @@ def test_registry_walk(entry, tmp_path):
     model = hyst.Model(entry.name, entry.example_params)
     assert model.name == entry.name
     v = probe_input()
-    first = model.simulate(v[:300])
+    first, mid_run = model.simulate(v[:300], return_state=True)
     assert first.shape == (300,) and np.all(np.isfinite(first))
 
-    # Saved in mid-run state: the loaded model continues exactly where this one does.
+    # Saved with a mid-run start state: the loaded model continues exactly where the run ended.
+    model.state = mid_run
     path = tmp_path / f"{entry.name}.json"
     hyst.save_model(path, model, info={"test": "registry walk"})
     loaded = hyst.load_model(path)
@@ -59,11 +60,9 @@ def test_registry_walk(entry, tmp_path):
     assert json.loads(path.read_text())["info"] == {"test": "registry walk"}
 
     if model.has_inverse():
-        model.reset()
         inverse = model.inverse()
         targets = model.simulate(v)
-        model.reset()
-        inputs, report = model.inverse().invert(targets)
+        inputs, report = inverse.invert(targets)
         assert report.ok
         np.testing.assert_allclose(model.simulate(inputs), targets, rtol=0, atol=1e-12)
         assert isinstance(inverse, hyst.Inverse) and isinstance(inverse.state, dict)
@@ -73,11 +72,15 @@ def test_model_params_state_and_copies():
     model = hyst.Model("pi", PI_PARAMS)
     assert model.params == PI_PARAMS
     assert model.state == {"play": [0.0, 0.0]}
-    np.testing.assert_allclose(model.simulate([0.5, 1.0]), [0.7, 1.45], atol=1e-15)
-    assert model.state == pytest.approx({"play": [1.0, 0.7]})
+    output, state = model.simulate([0.5, 1.0], return_state=True)
+    np.testing.assert_allclose(output, [0.7, 1.45], atol=1e-15)
+    assert state == pytest.approx({"play": [1.0, 0.7]})
+    assert model.state == {"play": [0.0, 0.0]}  # running never changes the model
+    np.testing.assert_allclose(model.simulate([0.6, 0.2, -1.0], state=state),
+                               [1.05, 0.55, -1.25], atol=1e-15)
     saved = copy.copy(model)
-    model.simulate([0.6, 0.2, -1.0])
-    np.testing.assert_allclose(saved.simulate([0.6, 0.2, -1.0]), [1.05, 0.55, -1.25], atol=1e-15)
+    model.state = state
+    assert saved.state == {"play": [0.0, 0.0]}
     model.state = {"play": np.array([0.5, 0.3])}
     assert model.state == {"play": [0.5, 0.3]}
     model.reset()
@@ -93,9 +96,9 @@ def test_model_params_state_and_copies():
     assert document["info"] == {"note": "x"}
 
 
-def test_inverse_from_the_current_state_with_limits():
+def test_inverse_from_the_start_state_with_limits():
     model = hyst.Model("pi", PI_PARAMS)
-    model.simulate([0.8, -0.2])
+    _, model.state = model.simulate([0.8, -0.2], return_state=True)
     inverse = model.inverse(input_min=-1.0, input_max=1.0)
     inputs, report = inverse.invert([0.5, 5.0])
     assert report.saturated_samples == 1 and report.first_saturated == 1
@@ -171,8 +174,8 @@ def test_one_validation_rule_on_the_piezo_amplitudes():
     # shifted to the measured first sample.
     predictor = copy.copy(model)
     predictor.reset()
-    predictor.simulate(v1)
-    predicted = predictor.simulate(v1)
+    _, periodic = predictor.simulate(v1, return_state=True)
+    predicted = predictor.simulate(v1, state=periodic)
     predicted += y1[0] - predicted[0]
     nrmse_percent = 100 * np.sqrt(np.mean((y1 - predicted) ** 2)) / (y1.max() - y1.min())
     assert report.validation.nrmse_percent == pytest.approx(nrmse_percent, rel=1e-12)

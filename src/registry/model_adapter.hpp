@@ -91,6 +91,9 @@ class InverseAdapter final : public DynamicInverse {
     return hyst::invert(inverse_, state_, targets, inputs);
   }
   nlohmann::json state() const override { return state_to_json_(state_); }
+  std::unique_ptr<DynamicInverse> clone() const override {
+    return std::make_unique<InverseAdapter>(*this);
+  }
 
  private:
   Inverse inverse_;

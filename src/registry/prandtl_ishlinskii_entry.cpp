@@ -26,6 +26,9 @@ class PiInverseAdapter final : public DynamicInverse {
     return invert_pi_batch(inverse_, state_, targets, inputs, workspace_);
   }
   nlohmann::json state() const override { return play_state_to_json(state_); }
+  std::unique_ptr<DynamicInverse> clone() const override {
+    return std::make_unique<PiInverseAdapter>(*this);
+  }
 
  private:
   InversePrandtlIshlinskii inverse_;

@@ -32,6 +32,8 @@ class DynamicInverse {
   virtual InverseReport invert(std::span<const double> targets, std::span<double> inputs) = 0;
   //! The inverse's own state as JSON (e.g. for `hyst info`).
   virtual nlohmann::json state() const = 0;
+  //! An independent copy, state included.
+  virtual std::unique_ptr<DynamicInverse> clone() const = 0;
 };
 
 class DynamicModel {
