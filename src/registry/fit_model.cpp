@@ -45,14 +45,23 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
   const bool held_out_part = records.validation_input.empty() && request.validate_fraction > 0.0 &&
                              report.validation && report.validation->samples < samples;
   const std::size_t held_begin = held_out_part ? samples - report.validation->samples : 0;
+  std::vector<double> simulated(samples);
   try {
-    std::vector<double> simulated(samples);
     outcome.model->clone()->simulate(records.input, simulated);
-    const auto verdict = judge_simulation(records.output, simulated, held_begin);
-    report.quality = verdict.quality;
-    report.quality_note = verdict.reason;
+  } catch (const Error& error) {
+    // An output that overflows or runs away on the fit record's own input.
+    report.quality = FitQuality::unstable;
+    report.quality_note = error.what();
+    simulated.clear();
+  }
+  try {
+    if (!simulated.empty()) {
+      const auto verdict = judge_simulation(records.output, simulated, held_begin);
+      report.quality = verdict.quality;
+      report.quality_note = verdict.reason;
+    }
   } catch (const std::exception&) {
-    report.quality = FitQuality::unchecked;  // e.g. a record too short to simulate
+    report.quality = FitQuality::unchecked;  // e.g. a record too short to judge
   }
   try {
     // The samples of a resampled record are not in time order: no ARX there.

@@ -14,11 +14,17 @@
 //     static std::unique_ptr<DynamicInverse> make_inverse(const Model&,
 //                                                         const typename Model::State&,
 //                                                         const InverseLimits&);
+//     // Optional, for models whose recursion can diverge on finite input: the largest |output|
+//     // a run that has not run away can reach, and how that bound is stated in messages.
+//     static double runaway_limit(const Model&);
+//     static std::string runaway_explanation(const Model&);
 //   };
 
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -62,6 +68,7 @@ class ModelAdapter final : public DynamicModel {
                     "input");
       }
     }
+    if constexpr (requires { Codec::runaway_limit(model_); }) throw_if_runaway(input, output);
   }
   std::size_t parameter_count() const override { return Codec::parameter_count(model_); }
   std::string describe() const override { return Codec::describe(model_); }
@@ -73,6 +80,20 @@ class ModelAdapter final : public DynamicModel {
   const Model& model() const { return model_; }
 
  private:
+  // A recursion that diverges on finite input (an unstable feedback of the model's own outputs)
+  // is an error at the first sample beyond the model's stated bound, not a result.
+  void throw_if_runaway(std::span<const double> input, std::span<const double> output) const {
+    const double limit = Codec::runaway_limit(model_);
+    for (std::size_t k = 0; k < output.size(); ++k) {
+      if (std::abs(output[k]) > limit) {
+        throw Error(fmt::format("the simulation ran away at sample {} (input {}): the output {} "
+                                "is beyond +-{:g} ({})",
+                                k, input[k], output[k], limit, Codec::runaway_explanation(model_)),
+                    "input");
+      }
+    }
+  }
+
   Model model_;
   State state_;
 };

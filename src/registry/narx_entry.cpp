@@ -28,6 +28,10 @@ std::vector<std::size_t> sizes(JsonFields& fields, std::string_view key) {
   return result;
 }
 
+// Outputs are normalised by y_scale, which the fitter sets from the fit record; a free run a
+// thousand scales away from it has left anything the model describes.
+constexpr double kRunawayScales = 1e3;
+
 struct NarxCodec {
   using Model = Narx;
   static constexpr std::string_view name = "narx";
@@ -81,6 +85,14 @@ struct NarxCodec {
         model.regressor_count(), p.input_lags, p.output_lags, p.play_thresholds.size(),
         fmt::join(p.hidden_sizes, ", "), p.weights.size(), fmt::join(p.play_thresholds, ", "),
         p.input_offset, p.input_scale, p.output_offset, p.output_scale);
+  }
+  // The tanh layers are bounded, but the linear output lags can feed back unstably.
+  static double runaway_limit(const Model& model) {
+    return std::abs(model.params().output_offset) + kRunawayScales * model.params().output_scale;
+  }
+  static std::string runaway_explanation(const Model& model) {
+    return fmt::format("{:g} output scales y_scale = {:g} from the output offset {:g}",
+                       kRunawayScales, model.params().output_scale, model.params().output_offset);
   }
   static bool has_inverse(const Model&) { return false; }
   static std::unique_ptr<DynamicInverse> make_inverse(const Model&, const Model::State&,

@@ -172,5 +172,26 @@ TEST(ModelFile, ModelsWithoutInverseSayWhy) {
   EXPECT_HYST_ERROR(model->inverse({}), "PI weight p[0] = -0.1 must be > 0");
 }
 
+// y[k] = v[k] + 2 y[k-1] (no network, unit scales): from rest with v = 1 the output is
+// 2^(k+1) - 1, first beyond the bound of 1000 output scales at k = 9 (1023).
+TEST(ModelFile, RunawaySimulationIsAnErrorWithItsSample) {
+  const nlohmann::json params = {{"input_lags", 0},
+                                 {"output_lags", 1},
+                                 {"play_thresholds", nlohmann::json::array()},
+                                 {"hidden_sizes", {1}},
+                                 {"weights", {0, 0, 0, 0, 0, 1, 2}}};
+  auto model = ModelRegistry::builtin().find("narx").create(params, nullptr);
+  const std::vector<double> input(9, 1.0);
+  std::vector<double> output(input.size());
+  model->simulate(input, output);
+  EXPECT_EQ(output.back(), 511.0);
+  model->reset();
+  const std::vector<double> longer(12, 1.0);
+  output.resize(longer.size());
+  EXPECT_HYST_ERROR(model->simulate(longer, output),
+                    "the simulation ran away at sample 9 (input 1): the output 1023 is beyond "
+                    "+-1000 (1000 output scales");
+}
+
 }  // namespace
 }  // namespace hyst
