@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "../registry/model_entries.hpp"
 #include "c_emitters.hpp"
 #include "hyst/core/error.hpp"
 
@@ -124,9 +123,8 @@ void @_reset(@_state *state) {
 
 }  // namespace
 
-CModelCode emit_bouc_wen_c(const DynamicModel& model, const CWriter& writer,
-                           const CExportOptions&) {
-  const BoucWen bouc_wen(bouc_wen_params_from_json(model.params(), "params"));
+CModelCode emit_c(const BoucWen& bouc_wen, const BoucWen::State& state, const CWriter& writer,
+                  const CExportOptions&) {
   const auto& p = bouc_wen.params();
   const bool exact = p.n == 1.0;
   if (!exact && p.tolerance > 0.0) {
@@ -154,16 +152,14 @@ CModelCode emit_bouc_wen_c(const DynamicModel& model, const CWriter& writer,
                                      "input linear between samples; advances z and returns F.");
   const std::string rk4_values =
       exact ? "" : fmt::format(",\n    {}u, {}", p.substeps, writer.number(max_step));
-  const auto state = model.state();
-  code.source =
-      (exact ? std::string(kExactAdvance)
-             : "#define @_MAX_SUBSTEPS 1000000UL\n\n" + std::string(kRk4Advance)) +
-      fmt::format("const @_params @_PARAMS = {{\n    {}, {}, {}, {}, {}, {}{}}};\n\n",
-                  writer.number(p.a), writer.number(p.beta), writer.number(p.gamma),
-                  writer.number(p.n), writer.number(p.stiffness), writer.number(p.alpha_k),
-                  rk4_values) +
-      CWriter::fill(kFunctions, {{"INPUT", writer.number(state.at("input").get<double>())},
-                                 {"Z", writer.number(state.at("z").get<double>())}});
+  code.source = (exact ? std::string(kExactAdvance)
+                       : "#define @_MAX_SUBSTEPS 1000000UL\n\n" + std::string(kRk4Advance)) +
+                fmt::format("const @_params @_PARAMS = {{\n    {}, {}, {}, {}, {}, {}{}}};\n\n",
+                            writer.number(p.a), writer.number(p.beta), writer.number(p.gamma),
+                            writer.number(p.n), writer.number(p.stiffness),
+                            writer.number(p.alpha_k), rk4_values) +
+                CWriter::fill(kFunctions, {{"INPUT", writer.number(state.input)},
+                                           {"Z", writer.number(state.hysteretic)}});
   return code;
 }
 

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "../registry/model_entries.hpp"
 #include "c_emitters.hpp"
 #include "hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp"
 
@@ -162,15 +161,18 @@ void @_inverse_reset(@_inverse_state *state) {
 }
 )";
 
+}  // namespace
+
 template <Envelope E>
-CModelCode emit(const DynamicModel& model, const GpiParams& params, const CWriter& writer,
-                const CExportOptions& options) {
-  const GeneralizedPrandtlIshlinskii<E> gpi(params);
+CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
+                  const typename GeneralizedPrandtlIshlinskii<E>::State& state,
+                  const CWriter& writer, const CExportOptions& options) {
+  const GpiParams& params = gpi.params();
   const InverseGeneralizedPrandtlIshlinskii<E> inverse(
       gpi, {options.limits.input_min, options.limits.input_max});
   const auto& ip = inverse.inverse_pi().inverse_operator().params();
   const auto inverse_reset = inverse.initial_state();
-  const auto inverse_init = model.inverse(options.limits)->state();
+  const auto inverse_init = inverse.state_consistent_with(state);
 
   CModelCode code;
   code.title = fmt::format("generalized Prandtl-Ishlinskii model (gpi), {} envelopes, {} operators",
@@ -219,26 +221,26 @@ CModelCode emit(const DynamicModel& model, const GpiParams& params, const CWrite
            {"IP", writer.table(ip.weights)},
            {"MIN", writer.number(options.limits.input_min)},
            {"MAX", writer.number(options.limits.input_max)},
-           {"INIT", writer.table(play_of(model.state()))},
+           {"INIT", writer.table(state.play)},
            {"RESET", writer.table(gpi.initial_state().play)},
-           {"IINIT", writer.table(play_of(inverse_init))},
+           {"IINIT", writer.table(inverse_init.pi.play)},
            {"IRESET", writer.table(inverse_reset.pi.play)},
-           {"UINIT", writer.number(inverse_init.at("envelope_value").get<double>())},
+           {"UINIT", writer.number(inverse_init.u)},
            {"URESET", writer.number(inverse_reset.u)},
-           {"DINIT", inverse_init.at("branch").get<std::string>() == "ascending" ? "1" : "0"},
+           {"DINIT", inverse_init.branch == LoopBranch::ascending ? "1" : "0"},
            {"DRESET", inverse_reset.branch == LoopBranch::ascending ? "1" : "0"}}) +
       std::string(kFunctions);
   return code;
 }
 
-}  // namespace
-
-CModelCode emit_generalized_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                                 const CExportOptions& options) {
-  const GpiParams params =
-      generalized_prandtl_ishlinskii_params_from_json(model.params(), "params");
-  return visit_envelope(params.envelope,
-                        [&]<class E>(E) { return emit<E>(model, params, writer, options); });
-}
+template CModelCode emit_c(const GeneralizedPrandtlIshlinskii<TanhEnvelope>&,
+                           const GeneralizedPrandtlIshlinskii<TanhEnvelope>::State&, const CWriter&,
+                           const CExportOptions&);
+template CModelCode emit_c(const GeneralizedPrandtlIshlinskii<ArctanEnvelope>&,
+                           const GeneralizedPrandtlIshlinskii<ArctanEnvelope>::State&,
+                           const CWriter&, const CExportOptions&);
+template CModelCode emit_c(const GeneralizedPrandtlIshlinskii<LinearEnvelope>&,
+                           const GeneralizedPrandtlIshlinskii<LinearEnvelope>::State&,
+                           const CWriter&, const CExportOptions&);
 
 }  // namespace hyst::detail

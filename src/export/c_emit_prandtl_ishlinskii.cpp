@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "../registry/model_entries.hpp"
 #include "c_emitters.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
@@ -88,18 +87,16 @@ std::string state_tables(const CWriter& writer, std::string_view name,
       {{"NAME", std::string(name)}, {"INIT", writer.table(init)}, {"RESET", writer.table(reset)}});
 }
 
-std::string model_state_functions(const DynamicModel& model, const CWriter& writer,
+std::string model_state_functions(const CWriter& writer, const std::vector<double>& init,
                                   const std::vector<double>& reset) {
-  return state_tables(writer, "PLAY", play_of(model.state()), reset) +
+  return state_tables(writer, "PLAY", init, reset) +
          "void @_init(@_state *state) { @_copy_play(state->play, @_PLAY_INIT); }\n\n"
          "void @_reset(@_state *state) { @_copy_play(state->play, @_PLAY_RESET); }\n\n";
 }
 
-std::string inverse_state_functions(const DynamicModel& model, const CWriter& writer,
-                                    const CExportOptions& options,
+std::string inverse_state_functions(const CWriter& writer, const std::vector<double>& init,
                                     const std::vector<double>& reset) {
-  return state_tables(writer, "INVERSE_PLAY", play_of(model.inverse(options.limits)->state()),
-                      reset) +
+  return state_tables(writer, "INVERSE_PLAY", init, reset) +
          "void @_inverse_init(@_inverse_state *state) {\n"
          "  @_copy_play(state->play, @_INVERSE_PLAY_INIT);\n}\n\n"
          "void @_inverse_reset(@_inverse_state *state) {\n"
@@ -108,9 +105,8 @@ std::string inverse_state_functions(const DynamicModel& model, const CWriter& wr
 
 }  // namespace
 
-CModelCode emit_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                     const CExportOptions& options) {
-  const PrandtlIshlinskii pi(prandtl_ishlinskii_params_from_json(model.params(), "params"));
+CModelCode emit_c(const PrandtlIshlinskii& pi, const PrandtlIshlinskii::State& state,
+                  const CWriter& writer, const CExportOptions& options) {
   const auto& p = pi.params();
   CModelCode code;
   code.title = fmt::format("Prandtl-Ishlinskii model (pi), {} play operators", pi.size());
@@ -138,7 +134,7 @@ typedef struct {
                               {{"R", writer.table(p.thresholds)},
                                {"P", writer.table(p.weights)},
                                {"OFF", writer.number(p.offset)}}) +
-                model_state_functions(model, writer, pi.initial_state().play) +
+                model_state_functions(writer, state.play, pi.initial_state().play) +
                 R"(@_real @_step(const @_params *params, @_state *state, @_real input) {
   return @_play_sum(params->thresholds, params->weights, params->offset, state->play,
                     @_OPERATORS, input);
@@ -168,7 +164,8 @@ typedef struct {
                       {"MIN", writer.number(options.limits.input_min)},
                       {"MAX", writer.number(options.limits.input_max)},
                       {"OFF", writer.number(p.offset)}}) +
-                 inverse_state_functions(model, writer, options, inverse.initial_state().play) +
+                 inverse_state_functions(writer, inverse.state_consistent_with(state).play,
+                                         inverse.initial_state().play) +
                  R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
                      @_real target) {
   const @_real input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
@@ -197,10 +194,9 @@ std::string output_limits(const ModifiedPrandtlIshlinskii::Params& p, const CWri
 
 }  // namespace
 
-CModelCode emit_modified_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                              const CExportOptions& options) {
-  const ModifiedPrandtlIshlinskii mpi(
-      modified_prandtl_ishlinskii_params_from_json(model.params(), "params"));
+CModelCode emit_c(const ModifiedPrandtlIshlinskii& mpi,
+                  const ModifiedPrandtlIshlinskii::State& state, const CWriter& writer,
+                  const CExportOptions& options) {
   const auto& p = mpi.params();
   CModelCode code;
   code.title = fmt::format(
@@ -241,7 +237,7 @@ typedef struct {
            {"D", writer.table(p.dead_zone.thresholds)},
            {"G", writer.table(p.dead_zone.weights)},
            {"OFF", writer.number(p.offset)}}) +
-      model_state_functions(model, writer, mpi.initial_state().play) +
+      model_state_functions(writer, state.play, mpi.initial_state().play) +
       R"(@_real @_step(const @_params *params, @_state *state, @_real input) {
   const @_real hysteresis = @_play_sum(params->thresholds, params->weights, params->pi_offset,
                                        state->play, @_OPERATORS, input);
@@ -282,7 +278,8 @@ typedef struct {
            {"Q", writer.number(p.pi.offset)},
            {"MIN", writer.number(options.limits.input_min)},
            {"MAX", writer.number(options.limits.input_max)}}) +
-      inverse_state_functions(model, writer, options, inverse.initial_state().play) +
+      inverse_state_functions(writer, inverse.state_consistent_with(state).play,
+                              inverse.initial_state().play) +
       R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
                      @_real target) {
   const @_real hysteresis = @_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights,

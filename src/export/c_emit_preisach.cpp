@@ -2,13 +2,13 @@
 // inverse (preisach.hpp, preisach_state.hpp, everett_relay_grid.hpp, inverse_preisach.hpp,
 // bracketed_search.hpp).
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "../registry/model_entries.hpp"
 #include "c_emitters.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
 
@@ -350,23 +350,23 @@ std::string memory_tables(const CWriter& writer, std::string_view name,
        {"INPUT", fmt::format("({})", writer.number(state.input))}});
 }
 
-// The model file's state as a model state (preisach_entry.cpp's form: saturation, memory, input).
-PreisachState state_from_file(const Preisach& preisach, const nlohmann::json& json) {
-  const auto saturation =
-      preisach_initial_state_from_string(json.at("saturation").get<std::string>());
-  const auto memory = json.at("memory").get<std::vector<double>>();
+// The state rebuilt from what a model file stores of it (the saturation, the memory, the last
+// input or none), as loading that file would: the exported tables are those of the model file.
+PreisachState state_as_in_file(const Preisach& preisach, const PreisachState& state) {
+  const auto saturation = state.from_positive_saturation()
+                              ? PreisachInitialState::positive_saturation
+                              : PreisachInitialState::negative_saturation;
   double input = saturation == PreisachInitialState::positive_saturation
                      ? std::numeric_limits<double>::infinity()
                      : -std::numeric_limits<double>::infinity();
-  if (json.contains("input") && !json.at("input").is_null()) input = json.at("input").get<double>();
-  return preisach.make_state(saturation, memory, input);
+  if (std::isfinite(state.input)) input = state.input;
+  return preisach.make_state(saturation, state.memory(), input);
 }
 
 }  // namespace
 
-CModelCode emit_preisach_c(const DynamicModel& model, const CWriter& writer,
-                           const CExportOptions& options) {
-  const Preisach preisach(preisach_params_from_json(model.params(), "params"));
+CModelCode emit_c(const Preisach& preisach, const PreisachState& state, const CWriter& writer,
+                  const CExportOptions& options) {
   InversePreisachOptions inverse_options;
   if (std::isfinite(options.limits.input_min)) inverse_options.input_min = options.limits.input_min;
   if (std::isfinite(options.limits.input_max)) inverse_options.input_max = options.limits.input_max;
@@ -421,7 +421,7 @@ CModelCode emit_preisach_c(const DynamicModel& model, const CWriter& writer,
       writer.number(inverse.input_tolerance()), writer.number(0.0), inverse.max_iterations());
   code.source +=
       "/* The state stored in the model file (INIT) and the default initial state (RESET). */\n";
-  code.source += memory_tables(writer, "INIT", state_from_file(preisach, model.state()));
+  code.source += memory_tables(writer, "INIT", state_as_in_file(preisach, state));
   code.source += memory_tables(writer, "RESET", preisach.initial_state());
   code.source += CWriter::fill(kModelFunctions, {{"F", writer.single() ? "F" : ""}});
   return code;

@@ -1,33 +1,30 @@
 #pragma once
-// One emitter per model family: the C code of a model (and its inverse) in its current state.
-// Each reads the model's parameters and state in their model-file form and builds the concrete
-// model with the library, so that every table (inverse weights, Everett table, ...) holds the
-// library's own numbers.
-
-#include <string>
-#include <vector>
-
-#include <nlohmann/json.hpp>
+// One emitter per model family: the C code of a concrete model (and its inverse) in a given state.
+// Each builds its tables (inverse weights, Everett table, ...) with the library, so that they hold
+// the library's own numbers. The registry entries call them (registry/c_code_capability.hpp), one
+// overload per model type.
 
 #include "c_writer.hpp"
-#include "hyst/registry/dynamic_model.hpp"
+#include "hyst/models/bouc_wen.hpp"
+#include "hyst/models/generalized_prandtl_ishlinskii.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/preisach.hpp"
 
 namespace hyst::detail {
 
-CModelCode emit_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                     const CExportOptions& options);
-CModelCode emit_modified_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                              const CExportOptions& options);
-CModelCode emit_generalized_prandtl_ishlinskii_c(const DynamicModel& model, const CWriter& writer,
-                                                 const CExportOptions& options);
-CModelCode emit_preisach_c(const DynamicModel& model, const CWriter& writer,
-                           const CExportOptions& options);
-CModelCode emit_bouc_wen_c(const DynamicModel& model, const CWriter& writer,
-                           const CExportOptions& options);
-
-//! The "play" array of a PI-family state in model-file form.
-inline std::vector<double> play_of(const nlohmann::json& state) {
-  return state.at("play").get<std::vector<double>>();
-}
+CModelCode emit_c(const PrandtlIshlinskii& model, const PrandtlIshlinskii::State& state,
+                  const CWriter& writer, const CExportOptions& options);
+CModelCode emit_c(const ModifiedPrandtlIshlinskii& model,
+                  const ModifiedPrandtlIshlinskii::State& state, const CWriter& writer,
+                  const CExportOptions& options);
+template <Envelope E>
+CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& model,
+                  const typename GeneralizedPrandtlIshlinskii<E>::State& state,
+                  const CWriter& writer, const CExportOptions& options);
+CModelCode emit_c(const Preisach& model, const PreisachState& state, const CWriter& writer,
+                  const CExportOptions& options);
+CModelCode emit_c(const BoucWen& model, const BoucWen::State& state, const CWriter& writer,
+                  const CExportOptions& options);
 
 }  // namespace hyst::detail

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <utility>
 
-#include "hyst/export/export_c.hpp"
+#include "hyst/export/c_code.hpp"
 
 namespace hyst::detail {
 

@@ -5,29 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "c_emitters.hpp"
-#include "c_writer.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/registry/model_registry.hpp"
 
 namespace hyst {
 namespace {
-
-using Emitter = detail::CModelCode (*)(const DynamicModel&, const detail::CWriter&,
-                                       const CExportOptions&);
-
-struct Supported {
-  std::string_view name;
-  Emitter emit;
-};
-
-constexpr Supported kSupported[] = {
-    {"pi", &detail::emit_prandtl_ishlinskii_c},
-    {"gpi", &detail::emit_generalized_prandtl_ishlinskii_c},
-    {"modified_pi", &detail::emit_modified_prandtl_ishlinskii_c},
-    {"preisach", &detail::emit_preisach_c},
-    {"bouc_wen", &detail::emit_bouc_wen_c},
-};
 
 std::string checked_prefix(const CExportOptions& options, std::string_view model) {
   const std::string prefix =
@@ -49,14 +32,17 @@ std::string checked_prefix(const CExportOptions& options, std::string_view model
 }  // namespace
 
 CCode generate_c(const DynamicModel& model, const CExportOptions& options) {
-  for (const auto& supported : kSupported) {
-    if (supported.name != model.name()) continue;
-    const detail::CWriter writer(checked_prefix(options, model.name()), options.scalar);
-    return detail::assemble_c_files(writer, supported.emit(model, writer, options), options.source);
+  // The model's entry provides its C code; the supported models are the entries that do.
+  const auto& registry = ModelRegistry::builtin();
+  if (const auto* entry = registry.find_if_known(model.name()); entry && entry->can_export_c()) {
+    CExportOptions checked = options;
+    checked.prefix = checked_prefix(options, model.name());
+    return entry->c_code(model, checked);
   }
   std::string names;
-  for (const auto& supported : kSupported)
-    names += fmt::format("{}{}", names.empty() ? "" : ", ", supported.name);
+  for (const auto& entry : registry.entries()) {
+    if (entry.can_export_c()) names += fmt::format("{}{}", names.empty() ? "" : ", ", entry.name);
+  }
   throw Error(
       fmt::format("C export: the model '{}' is not supported (supported: {})", model.name(), names),
       "model");

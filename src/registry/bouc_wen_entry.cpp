@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
+#include "c_code_capability.hpp"
 #include "hyst/identify/fit_bouc_wen.hpp"
 #include "hyst/models/bouc_wen.hpp"
 #include "model_entries.hpp"
@@ -72,6 +74,14 @@ struct BoucWenCodec {
   }
 };
 
+BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params_json,
+                                          const std::string& path) {
+  JsonFields fields(params_json, path);
+  auto params = BoucWenCodec::params_from_json(fields);
+  fields.finish();
+  return params;
+}
+
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
   return make_dynamic_model<BoucWenCodec>(bouc_wen_params_from_json(params_json, "params"),
@@ -92,14 +102,6 @@ FitOutcome fit(const FitRequest& request) {
 }
 
 }  // namespace
-
-BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params_json,
-                                          const std::string& path) {
-  JsonFields fields(params_json, path);
-  auto params = BoucWenCodec::params_from_json(fields);
-  fields.finish();
-  return params;
-}
 
 ModelEntry bouc_wen_entry() {
   ModelEntry entry;
@@ -126,6 +128,8 @@ ModelEntry bouc_wen_entry() {
   entry.fit = &fit;
   entry.example_params = {{"a", 1.0}, {"beta", 0.6},      {"gamma", 0.2},
                           {"n", 1.5}, {"stiffness", 1.0}, {"alpha_k", 0.3}};
+  entry.c_code = c_code_of<BoucWenCodec>();
+  entry.actuator_force = actuator_force_of<BoucWenCodec>();
   return entry;
 }
 

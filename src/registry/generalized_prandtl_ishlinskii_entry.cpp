@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
+#include "c_code_capability.hpp"
 #include "hyst/identify/fit_generalized_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
@@ -140,14 +142,6 @@ FitOutcome fit(const FitRequest& request) {
 
 }  // namespace
 
-GpiParams generalized_prandtl_ishlinskii_params_from_json(const nlohmann::json& params_json,
-                                                          const std::string& path) {
-  JsonFields fields(params_json, path);
-  auto params = params_from_json(fields);
-  fields.finish();
-  return params;
-}
-
 ModelEntry generalized_prandtl_ishlinskii_entry() {
   ModelEntry entry;
   entry.name = "gpi";
@@ -191,6 +185,10 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
                           {"input_min", -3.0},
                           {"input_max", 3.0},
                           {"initial_input", 0.0}};
+  entry.c_code =
+      c_code_of<GpiCodec<TanhEnvelope>, GpiCodec<ArctanEnvelope>, GpiCodec<LinearEnvelope>>();
+  entry.actuator_force = actuator_force_of<GpiCodec<TanhEnvelope>, GpiCodec<ArctanEnvelope>,
+                                           GpiCodec<LinearEnvelope>>();
   return entry;
 }
 

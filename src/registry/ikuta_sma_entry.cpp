@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
@@ -53,14 +54,6 @@ struct IkutaSmaCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
-  return make_dynamic_model<IkutaSmaCodec>(ikuta_sma_params_from_json(params_json, "params"),
-                                           state_json);
-}
-
-}  // namespace
-
 IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params_json,
                                             const std::string& path) {
   JsonFields fields(params_json, path);
@@ -76,6 +69,14 @@ IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params_json,
   fields.finish();
   return params;
 }
+
+std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
+                                     const nlohmann::json* state_json) {
+  return make_dynamic_model<IkutaSmaCodec>(ikuta_sma_params_from_json(params_json, "params"),
+                                           state_json);
+}
+
+}  // namespace
 
 ModelEntry ikuta_sma_entry() {
   ModelEntry entry;
@@ -97,6 +98,7 @@ ModelEntry ikuta_sma_entry() {
                           {"austenite_start", -0.2},   {"austenite_finish", 0.8},
                           {"output_austenite", 1.0},   {"output_martensite", -1.0},
                           {"initial_fraction", 1.0},   {"initial_input", -1.0}};
+  entry.actuator_force = actuator_force_of<IkutaSmaCodec>();
   return entry;
 }
 

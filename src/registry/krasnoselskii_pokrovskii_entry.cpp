@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
 #include "hyst/identify/fit_krasnoselskii_pokrovskii.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
 #include "model_adapter.hpp"
@@ -43,8 +44,6 @@ struct KpCodec {
   }
 };
 
-}  // namespace
-
 KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
     const nlohmann::json& params_json, const std::string& path) {
   JsonFields fields(params_json, path);
@@ -58,8 +57,6 @@ KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
   fields.finish();
   return params;
 }
-
-namespace {
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
@@ -112,6 +109,7 @@ ModelEntry krasnoselskii_pokrovskii_entry() {
   entry.example_params = {{"levels", 6},       {"lower", -1.0},
                           {"upper", 1.0},      {"weights", std::vector<double>(21, 1.0 / 21.0)},
                           {"ramp_cells", 1.0}, {"offset", 0.0}};
+  entry.actuator_force = actuator_force_of<KpCodec>();
   return entry;
 }
 

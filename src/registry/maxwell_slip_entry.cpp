@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
 #include "hyst/identify/fit_maxwell_slip.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/models/maxwell_slip.hpp"
@@ -69,8 +70,6 @@ struct MaxwellSlipCodec {
   }
 };
 
-}  // namespace
-
 MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_json,
                                                   const std::string& path) {
   JsonFields fields(params_json, path);
@@ -86,8 +85,6 @@ MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_j
   fields.finish();
   return params;
 }
-
-namespace {
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
@@ -152,6 +149,7 @@ ModelEntry maxwell_slip_entry() {
                           {"break_away", {0.3, 0.4, 0.5}},
                           {"linear_stiffness", 0.5},
                           {"offset", 0.0}};
+  entry.actuator_force = actuator_force_of<MaxwellSlipCodec>();
   return entry;
 }
 

@@ -78,6 +78,7 @@ class ModelAdapter final : public DynamicModel {
   }
 
   const Model& model() const { return model_; }
+  const State& model_state() const { return state_; }
 
  private:
   // A recursion that diverges on finite input (an unstable feedback of the model's own outputs)
@@ -97,6 +98,22 @@ class ModelAdapter final : public DynamicModel {
   Model model_;
   State state_;
 };
+
+// `use(model, state)` on the concrete model and state of `model`, which one of Codecs' adapters
+// holds (the GPI has one codec per envelope); hyst::Error when another entry made it. This is how
+// an entry's capabilities reach the concrete model: no JSON in between.
+template <class Codec, class... Others, class Use>
+decltype(auto) with_concrete(const DynamicModel& model, Use&& use) {
+  if (const auto* adapter = dynamic_cast<const ModelAdapter<Codec>*>(&model)) {
+    return use(adapter->model(), adapter->model_state());
+  }
+  if constexpr (sizeof...(Others) > 0) {
+    return with_concrete<Others...>(model, std::forward<Use>(use));
+  } else {
+    throw Error(fmt::format("the model '{}' was not made by the registry's '{}' entry",
+                            model.name(), Codec::name));
+  }
+}
 
 // An inverse with its running state; the state is written as {"play": [...]} when it is a
 // play-operator state, and by the inverse's own codec function otherwise.

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
+#include "c_code_capability.hpp"
 #include "hyst/identify/fit_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
@@ -71,8 +73,6 @@ struct ModifiedPiCodec {
   }
 };
 
-}  // namespace
-
 ModifiedPrandtlIshlinskii::Params modified_prandtl_ishlinskii_params_from_json(
     const nlohmann::json& params_json, const std::string& path) {
   JsonFields fields(params_json, path);
@@ -97,8 +97,6 @@ std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
   }
   return field;
 }
-
-namespace {
 
 std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
                                      const nlohmann::json* state_json) {
@@ -180,6 +178,8 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
                           {"dead_zone_thresholds", {-1.5, -0.8, -0.3, 0.0, 0.4, 0.9, 1.6}},
                           {"dead_zone_weights", {0.05, 0.1, 0.2, 1.0, -0.15, -0.2, -0.1}},
                           {"offset", 0.0}};
+  entry.c_code = c_code_of<ModifiedPiCodec>();
+  entry.actuator_force = actuator_force_of<ModifiedPiCodec>();
   return entry;
 }
 

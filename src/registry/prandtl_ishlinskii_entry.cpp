@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
+#include "c_code_capability.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
@@ -115,14 +117,6 @@ FitOutcome fit(const FitRequest& request) {
 
 }  // namespace
 
-PrandtlIshlinskii::Params prandtl_ishlinskii_params_from_json(const nlohmann::json& params_json,
-                                                              const std::string& path) {
-  JsonFields fields(params_json, path);
-  auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
-  fields.finish();
-  return params;
-}
-
 ModelEntry prandtl_ishlinskii_entry() {
   ModelEntry entry;
   entry.name = std::string(PrandtlIshlinskiiCodec::name);
@@ -146,6 +140,8 @@ ModelEntry prandtl_ishlinskii_entry() {
   entry.fit = &fit;
   entry.example_params = {
       {"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.0}};
+  entry.c_code = c_code_of<PrandtlIshlinskiiCodec>();
+  entry.actuator_force = actuator_force_of<PrandtlIshlinskiiCodec>();
   return entry;
 }
 

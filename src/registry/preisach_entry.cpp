@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "actuator_force_capability.hpp"
+#include "c_code_capability.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/identify/fit_preisach.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
@@ -14,6 +16,7 @@
 #include "model_entries.hpp"
 
 namespace hyst::detail {
+namespace {
 
 Preisach::Params preisach_params_from_json(const nlohmann::json& params_json,
                                            const std::string& path) {
@@ -33,8 +36,6 @@ Preisach::Params preisach_params_from_json(const nlohmann::json& params_json,
   fields.finish();
   return params;
 }
-
-namespace {
 
 // The state in a file: the saturation the history starts from, the stored extrema, and the last
 // input (null when no input was applied since saturation; JSON has no infinity).
@@ -174,6 +175,8 @@ ModelEntry preisach_entry() {
                           {"layout", "cell_centred"},
                           {"offset", 0.0},
                           {"initial_state", "negative_saturation"}};
+  entry.c_code = c_code_of<PreisachCodec>();
+  entry.actuator_force = actuator_force_of<PreisachCodec>();
   return entry;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@
 #include "hyst/actuator/force_compensator.hpp"
 #include "hyst/control/references.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/registry/actuator_force.hpp"
+#include "hyst/registry/model_registry.hpp"
 #include "loop_allocations.hpp"
 
 namespace hyst {
@@ -228,6 +231,27 @@ TEST(ForceModels, UnsupportedOrNonInvertibleModelsAreRejected) {
                           {"dead_zone_weights", {1.0, -1.2}}}}});
   EXPECT_HYST_ERROR(actuator_config_from_json(mpi, "p.json"),
                     "p.json: hysteresis.params: dead-zone partial sum g[0] + ... + g[1] = ");
+}
+
+// The force models are the registry entries' (actuator_force): every alternative of AnyHysteresis
+// is provided by exactly one entry, and an entry's example model becomes an alternative it lists,
+// named after the entry.
+TEST(ForceModels, EveryAlternativeComesFromOneEntry) {
+  std::vector<int> providers(std::variant_size_v<AnyHysteresis>, 0);
+  for (const auto& entry : ModelRegistry::builtin().entries()) {
+    if (!entry.actuator_force) continue;
+    for (const auto index : entry.actuator_force->alternatives)
+      ++providers.at(index);
+    const auto model = entry.create(entry.example_params, nullptr);
+    const auto force = entry.actuator_force->hysteresis(*model);
+    EXPECT_NE(std::find(entry.actuator_force->alternatives.begin(),
+                        entry.actuator_force->alternatives.end(), force.index()),
+              entry.actuator_force->alternatives.end())
+        << entry.name;
+    EXPECT_EQ(hysteresis_name(force), entry.name);
+  }
+  for (std::size_t index = 0; index < providers.size(); ++index)
+    EXPECT_EQ(providers[index], 1) << "alternative " << index;
 }
 
 TEST(NoAllocation, ClosedLoopStepWithTheNumericalInverse) {

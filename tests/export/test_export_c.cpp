@@ -361,6 +361,16 @@ TEST_F(ExportCTest, UnsupportedModelIsNamed) {
   EXPECT_HYST_ERROR(generate_c(*model, {}), "'kp' is not supported");
 }
 
+// An entry's C export takes its own concrete model: a model another entry made is refused by name
+// (no JSON is read to get around it).
+TEST_F(ExportCTest, EntryRefusesAnotherEntrysModel) {
+  const auto gpi = model_from_json(example_document("gpi"), "test");
+  CExportOptions options;
+  options.prefix = "m";
+  EXPECT_HYST_ERROR(ModelRegistry::builtin().find("pi").c_code(*gpi, options),
+                    "the model 'gpi' was not made by the registry's 'pi' entry");
+}
+
 TEST_F(ExportCTest, AdaptiveBoucWenIsRefused) {
   auto document = example_document("bouc_wen");
   document["params"]["tolerance"] = 1e-8;

@@ -5,11 +5,12 @@
 //!
 //! - Compile time: Actuator<H> and InverseCompensator<H> are templates on the model type (the
 //!   generalized Prandtl-Ishlinskii model with tanh envelopes by default).
-//! - Run time (files, command line, Python): AnyHysteresis, a std::variant over the library's
-//!   models, chosen by the model-file name ("gpi", "pi", "preisach", "modified_pi", "kp",
-//!   "maxwell_slip", "ikuta_sma", "bouc_wen"). Code that runs a loop visits the variant once and
-//!   runs the whole loop inside the visit, so no sample pays for a virtual call or a variant
-//!   dispatch.
+//! - Run time (files, command line, Python): AnyHysteresis (registry/actuator_force.hpp), a
+//!   std::variant over the models whose registry entry can be a force (ModelEntry::actuator_force:
+//!   "gpi", "pi", "preisach", "modified_pi", "kp", "maxwell_slip", "ikuta_sma", "bouc_wen"). A
+//!   model is read by its entry's create() and handed over by the entry as its concrete model.
+//!   Code that runs a loop visits the variant once and runs the whole loop inside the visit, so no
+//!   sample pays for a virtual call or a variant dispatch.
 //!
 //! The inverse of each model (InverseModel<H>): analytic where the model has one - IGPI for GPI,
 //! the inverse PI for PI and for Maxwell-slip (a stop-type PI model, invertible iff
@@ -17,8 +18,8 @@
 //! modified PI - and otherwise the bracketed numerical inverse: InversePreisach for Preisach,
 //! NumericalInverse<H> for every other model (KP, Ikuta SMA, Bouc-Wen), which needs a monotone
 //! one-step map and a preview() or a trivially copyable state (numerical_inverse.hpp). Adding a
-//! model: one alternative in AnyHysteresis and its name and parameter parser in
-//! hysteretic_force.cpp; an InverseModel specialisation only for an analytic inverse.
+//! force model (docs/architecture.md): its type in AnyHysteresis and `actuator_force` in its
+//! registry entry; an InverseModel specialisation only for an analytic inverse.
 //!
 //! Not a force model: the rate-dependent PI ("rate_dependent_pi"). Its output depends on the
 //! input rate (through the sample time of the model, not of the actuator) and hyst provides no
@@ -27,7 +28,6 @@
 
 #include <string>
 #include <string_view>
-#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -37,22 +37,9 @@
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
 #include "hyst/inverse/numerical_inverse.hpp"
-#include "hyst/models/bouc_wen.hpp"
-#include "hyst/models/generalized_prandtl_ishlinskii.hpp"
-#include "hyst/models/ikuta_sma.hpp"
-#include "hyst/models/krasnoselskii_pokrovskii.hpp"
-#include "hyst/models/maxwell_slip.hpp"
-#include "hyst/models/modified_prandtl_ishlinskii.hpp"
-#include "hyst/models/prandtl_ishlinskii.hpp"
-#include "hyst/models/preisach.hpp"
+#include "hyst/registry/actuator_force.hpp"
 
 namespace hyst {
-
-//! Every hysteresis model an actuator's force can follow, chosen at run time.
-using AnyHysteresis = std::variant<
-    GeneralizedPrandtlIshlinskii<TanhEnvelope>, GeneralizedPrandtlIshlinskii<ArctanEnvelope>,
-    GeneralizedPrandtlIshlinskii<LinearEnvelope>, PrandtlIshlinskii, Preisach,
-    ModifiedPrandtlIshlinskii, KrasnoselskiiPokrovskii, MaxwellSlip, IkutaSma, BoucWen>;
 
 //! The inverse of model type H, built with input (current) limits: by default the numerical
 //! inverse; specialised below for the models with an analytic or their own inverse.
@@ -120,14 +107,15 @@ struct InverseModel<MaxwellSlip> {
   }
 };
 
-//! The registry name of the model held ("gpi", "pi", "preisach", "modified_pi", "kp",
-//! "maxwell_slip", "ikuta_sma").
+//! The registry name of the model held: the entry whose actuator_force takes its alternative.
 std::string_view hysteresis_name(const AnyHysteresis& model);
 
-//! The names hysteresis_from_json() accepts, comma separated.
+//! The names hysteresis_from_json() accepts, comma separated: the entries with an actuator_force,
+//! in the order of their alternatives in AnyHysteresis.
 std::string hysteresis_names();
 
-//! A model from {"model": "<name>", "params": {...}} (the model-file form without state);
+//! A model from {"model": "<name>", "params": {...}} (the model-file form without state), made by
+//! the entry's create() and handed over by its actuator_force;
 //! `path` prefixes error messages ("actuator.json: hysteresis.params.rho: ..."). A model that
 //! cannot be inverted (Maxwell-slip without linear stiffness, a non-invertible modified PI) and
 //! the rate-dependent PI are rejected with a message saying why.

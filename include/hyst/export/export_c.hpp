@@ -14,7 +14,8 @@
 //!     P_inverse_params, P_inverse_state, P_INVERSE_PARAMS, P_inverse_init/_reset/_step
 //!                                                 when the model has an inverse
 //!
-//! Supported models (registry names): "pi" (+ inverse PI), "gpi" (+ inverse GPI), "modified_pi"
+//! Supported models (registry names; the entries that provide ModelEntry::c_code): "pi" (+ inverse
+//! PI), "gpi" (+ inverse GPI), "modified_pi"
 //! (+ its analytic inverse), "preisach" (Everett table form + the numerical inverse by bracketed
 //! search), "bouc_wen" (the library's exact n = 1 solution, or RK4 with its fixed step rule; no
 //! inverse). In double precision the generated step reproduces the library's step to rounding
@@ -30,34 +31,11 @@
 //! Sources: the model headers named in the generated files.
 
 #include <filesystem>
-#include <string>
 
+#include "hyst/export/c_code.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
 namespace hyst {
-
-//! The C scalar type of the generated code.
-enum class CScalar : unsigned char { double_precision, single_precision };
-
-struct CExportOptions {
-  //! Prefix of every C identifier and of the file names; empty = "hyst_" + model name. Must be a
-  //! C identifier (letters, digits, '_', not starting with a digit).
-  std::string prefix;
-  CScalar scalar = CScalar::double_precision;
-  //! The inverse's admissible input range (as for `hyst invert`).
-  InverseLimits limits{};
-  //! The file the model came from, named in the generated comments (may be empty).
-  std::string source;
-};
-
-//! The generated code, in memory.
-struct CCode {
-  std::string header_name;  //!< "<prefix>.h"
-  std::string header;
-  std::string source_name;  //!< "<prefix>.c"
-  std::string source;
-  bool has_inverse = false;  //!< the _inverse_ functions exist
-};
 
 //! Generates the C code of `model` in its current state. Throws hyst::Error naming the model for
 //! an unsupported model ("C export: the model 'kp' is not supported (supported: ...)") and for a

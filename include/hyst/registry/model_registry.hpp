@@ -1,9 +1,10 @@
 #pragma once
 //! \file
 //! The registry of models: for each model its name, a one-line description, its parameter
-//! schema, construction from model-file JSON, and its fitter where it has one. Every model of the
-//! library is registered here, so that the command line, model files and Python all know it by
-//! the same name.
+//! schema, construction from model-file JSON, and what else it can do: its fitter, its C export,
+//! its use as an actuator's force, where it has them. Every model of the library is registered
+//! here, so that the command line, model files, Python, the C export and the actuator all know it
+//! by the same name; a model is wired in by its entry alone (docs/architecture.md).
 
 #include <functional>
 #include <memory>
@@ -21,6 +22,10 @@
 #include "hyst/registry/validation_rule.hpp"
 
 namespace hyst {
+
+struct CCode;           // hyst/export/c_code.hpp
+struct CExportOptions;  // hyst/export/c_code.hpp
+struct ActuatorForce;   // hyst/registry/actuator_force.hpp
 
 //! One entry of a model's parameter schema.
 struct ParameterInfo {
@@ -75,6 +80,13 @@ struct ModelEntry {
       create;
   //! Empty when the model has no fitter.
   std::function<FitOutcome(const FitRequest&)> fit;
+  //! The C code of a model made by `create` or `fit` (and of its inverse), in its current state,
+  //! for options whose prefix is checked (generate_c() in export_c.hpp calls it); empty when the
+  //! model has no C export.
+  std::function<CCode(const DynamicModel&, const CExportOptions&)> c_code;
+  //! How a model made by `create` becomes an actuator's hysteretic force; null when it cannot be
+  //! one (hysteretic_force.hpp).
+  std::shared_ptr<const ActuatorForce> actuator_force;
   //! A small valid parameter set (for `hyst models --example`, tests and documentation).
   nlohmann::json example_params;
   //! Inputs for which the example model is meant: its hysteresis shows within them and nothing
@@ -85,6 +97,7 @@ struct ModelEntry {
   double example_inverse_tolerance = 1e-6;
 
   bool can_fit() const { return static_cast<bool>(fit); }
+  bool can_export_c() const { return static_cast<bool>(c_code); }
 };
 
 //! Fits `entry`'s model: prepares request.input/output as request.preprocessing asks
