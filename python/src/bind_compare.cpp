@@ -60,7 +60,25 @@ void bind_cross_record(py::module_& module) {
       .def_readonly("worst_record", &CrossRecordRow::worst_record)
       .def_readonly("parameters", &CrossRecordRow::parameters)
       .def_readonly("fit_seconds", &CrossRecordRow::fit_seconds)
-      .def_readonly("status", &CrossRecordRow::status);
+      .def_readonly("status", &CrossRecordRow::status)
+      .def_readonly("beats_yardstick", &CrossRecordRow::beats_yardstick,
+                    "Mean held-out NRMSE below the best reference predictor's.");
+  py::class_<CrossRecordReference>(module, "CrossRecordReference",
+                                   "A reference predictor of the yardstick, scored like a model.")
+      .def_readonly("name", &CrossRecordReference::name)
+      .def_readonly("ok", &CrossRecordReference::ok)
+      .def_readonly("error", &CrossRecordReference::error)
+      .def_readonly("scores", &CrossRecordReference::scores, "HeldOutScore per held-out record.")
+      .def_readonly("mean_nrmse_percent", &CrossRecordReference::mean_nrmse_percent)
+      .def_readonly("worst_nrmse_percent", &CrossRecordReference::worst_nrmse_percent)
+      .def_readonly("worst_record", &CrossRecordReference::worst_record);
+  py::class_<NoFitVerdict>(module, "NoFitVerdict", "A held-out record that no model describes.")
+      .def_readonly("record", &NoFitVerdict::record)
+      .def_readonly("best_model", &NoFitVerdict::best_model)
+      .def_readonly("best_nrmse_percent", &NoFitVerdict::best_nrmse_percent)
+      .def_property_readonly(
+          "findings", [](const NoFitVerdict& verdict) { return verdict.seen.findings; },
+          "What the looks at the record find (butterfly, drift, extrapolation).");
   py::class_<CrossRecordComparison>(
       module, "CrossRecordComparison",
       "Models fitted on some records and ranked on others (or leave-one-out).")
@@ -70,6 +88,12 @@ void bind_cross_record(py::module_& module) {
       .def_readonly("rule", &CrossRecordComparison::rule,
                     "How the held-out records were predicted.")
       .def_readonly("ranking", &CrossRecordComparison::ranking, "Best first; failed models last.")
+      .def_readonly("references", &CrossRecordComparison::references,
+                    "The yardstick: reference predictors fitted on the same fit records.")
+      .def_readonly("no_fit_percent", &CrossRecordComparison::no_fit_percent)
+      .def_readonly("no_fit", &CrossRecordComparison::no_fit,
+                    "NoFitVerdict per held-out record on which even the best model exceeds "
+                    "no_fit_percent.")
       .def("markdown", &cross_record_markdown, "The ranking as a Markdown table.")
       .def("csv", &cross_record_csv, "The ranking as CSV text.");
 }
@@ -163,6 +187,7 @@ void bind_compare(py::module_& module) {
           CrossRecordOptions cross;
           if (models) cross.models = *models;
           cross.fit_options = std::move(fit_options);
+          cross.no_fit_percent = no_fit_percent;
           cross.validation.start = validation_start_from_string(validation_start);
           cross.validation.align = validation_alignment_from_string(validation_align);
           const auto fit = named_records(*fit_records, "fit_records");

@@ -117,6 +117,34 @@ def test_compare_on_separate_records():
     assert comparison.ranking[1].mean_nrmse_percent > 0.1
     assert "| 1 | pi |" in comparison.markdown()
     assert comparison.csv().startswith("rank,model,status,mean_nrmse_percent")
+    # The yardstick: mean, last value held and the cubic y(v) (no ARX: a separate record).
+    assert [reference.name for reference in comparison.references][:2] == \
+        ["mean", "last value held"]
+    assert len(comparison.references) == 3 and all(r.ok for r in comparison.references)
+    large_v, large_y = sine_record(2.0)
+    small_v, small_y = sine_record(0.8)
+    mean = comparison.references[0]
+    assert isinstance(mean, hyst.CrossRecordReference)
+    assert mean.scores[0].metrics.rmse == pytest.approx(
+        np.sqrt(np.mean((np.asarray(small_y) - np.mean(large_y)) ** 2)), rel=1e-12)
+    assert best.beats_yardstick
+    assert comparison.no_fit == [] and comparison.no_fit_percent == 20.0
+
+
+def test_compare_on_separate_records_no_fit_verdict():
+    # A held-out butterfly (y = v^2) over twice the fitted range: no model describes it.
+    v, _ = sine_record(2.0)
+    comparison = hyst.compare(models=["pi"], fit_records={"plain": sine_record(1.0)},
+                              validate_records={"butterfly": (v, np.asarray(v) ** 2)},
+                              no_fit_percent=25.0)
+    assert comparison.no_fit_percent == 25.0
+    [verdict] = comparison.no_fit
+    assert isinstance(verdict, hyst.NoFitVerdict)
+    assert verdict.record == "butterfly" and verdict.best_model == "pi"
+    assert verdict.best_nrmse_percent > 25.0
+    assert any(finding.startswith("butterfly") for finding in verdict.findings)
+    assert any(finding.startswith("extrapolation") for finding in verdict.findings)
+    assert "No model describes the record butterfly" in comparison.markdown()
 
 
 def test_compare_leave_one_out():

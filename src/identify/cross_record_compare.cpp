@@ -12,6 +12,7 @@
 
 #include "hyst/core/error.hpp"
 #include "hyst/identify/compare.hpp"
+#include "hyst/identify/reference_predictors.hpp"
 #include "table_cells.hpp"
 
 namespace hyst {
@@ -51,17 +52,27 @@ std::vector<std::string> names_of(const std::vector<const NamedRecord*>& records
   return names;
 }
 
-void run_round(const ModelEntry& entry, const FitRound& round, const CrossRecordOptions& options,
-               CrossRecordRow& row) {
+// The fit records of a round joined one after the other.
+struct JoinedRecords {
   std::vector<double> input;
   std::vector<double> output;
+};
+
+JoinedRecords joined(const FitRound& round) {
+  JoinedRecords records;
   for (const auto* record : round.fit) {
-    input.insert(input.end(), record->input.begin(), record->input.end());
-    output.insert(output.end(), record->output.begin(), record->output.end());
+    records.input.insert(records.input.end(), record->input.begin(), record->input.end());
+    records.output.insert(records.output.end(), record->output.begin(), record->output.end());
   }
+  return records;
+}
+
+void run_round(const ModelEntry& entry, const FitRound& round, const CrossRecordOptions& options,
+               CrossRecordRow& row) {
+  const auto fit = joined(round);
   FitRequest request;
-  request.input = input;
-  request.output = output;
+  request.input = fit.input;
+  request.output = fit.output;
   if (const auto found = options.fit_options.find(entry.name); found != options.fit_options.end()) {
     request.options = found->second;
   }
@@ -75,13 +86,93 @@ void run_round(const ModelEntry& entry, const FitRound& round, const CrossRecord
   row.parameters = outcome.model->parameter_count();
   row.status = std::string(outcome.report.status());
   for (const auto* record : round.held_out) {
-    auto metrics = validate_on_record(*outcome.model, input, record->input, record->output,
+    auto metrics = validate_on_record(*outcome.model, fit.input, record->input, record->output,
                                       options.validation);
     if (!std::isfinite(metrics.nrmse_percent)) {
       throw Error(fmt::format("unstable: the prediction of '{}' is not finite", record->name));
     }
     row.scores.push_back({record->name, names_of(round.fit), metrics});
   }
+}
+
+// Mean and worst NRMSE of `scores`, for a model row or a reference.
+template <class Row>
+void summarise(Row& row) {
+  double sum = 0.0;
+  for (const auto& score : row.scores) {
+    sum += score.metrics.nrmse_percent;
+    if (score.metrics.nrmse_percent >= row.worst_nrmse_percent) {
+      row.worst_nrmse_percent = score.metrics.nrmse_percent;
+      row.worst_record = score.record;
+    }
+  }
+  row.mean_nrmse_percent = sum / static_cast<double>(row.scores.size());
+}
+
+// The reference predictors of every round, one CrossRecordReference per predictor.
+std::vector<CrossRecordReference> yardstick(const std::vector<FitRound>& rounds,
+                                            const CrossRecordOptions& options) {
+  ReferenceOptions reference;
+  reference.time_series =
+      options.time_series && options.validation.start == ValidationStart::continued;
+  reference.align_first_sample = options.validation.align == ValidationAlignment::first_sample;
+  std::vector<CrossRecordReference> references;
+  for (const auto& round : rounds) {
+    const auto fit = joined(round);
+    for (const auto* record : round.held_out) {
+      const auto scores = reference_predictions_on_record(fit.input, fit.output, record->input,
+                                                          record->output, reference);
+      if (references.empty()) {
+        for (const auto& score : scores) {
+          CrossRecordReference row;
+          row.name = score.name;
+          row.ok = true;
+          references.push_back(std::move(row));
+        }
+      }
+      for (std::size_t i = 0; i < scores.size(); ++i) {
+        auto& row = references[i];
+        if (!row.ok) continue;
+        if (!scores[i].validation) {
+          row.ok = false;
+          row.error = fmt::format("on '{}': {}", record->name, scores[i].error);
+          row.scores.clear();
+          continue;
+        }
+        row.scores.push_back({record->name, names_of(round.fit), *scores[i].validation});
+      }
+    }
+  }
+  for (auto& row : references) {
+    if (row.ok) summarise(row);
+  }
+  return references;
+}
+
+// The held-out records on which even the best model exceeds the threshold, with what they show.
+std::vector<NoFitVerdict> no_fit_verdicts(const std::vector<FitRound>& rounds,
+                                          const std::vector<CrossRecordRow>& ranking,
+                                          double threshold) {
+  std::vector<NoFitVerdict> verdicts;
+  std::size_t index = 0;  // of the held-out record in the rows' scores
+  for (const auto& round : rounds) {
+    const auto fit = joined(round);
+    for (const auto* record : round.held_out) {
+      const CrossRecordRow* best = nullptr;
+      for (const auto& row : ranking) {
+        if (row.ok && (best == nullptr || row.scores[index].metrics.nrmse_percent <
+                                              best->scores[index].metrics.nrmse_percent)) {
+          best = &row;
+        }
+      }
+      if (best != nullptr && best->scores[index].metrics.nrmse_percent > threshold) {
+        verdicts.push_back({record->name, best->model, best->scores[index].metrics.nrmse_percent,
+                            diagnose_held_out_record(fit.input, record->input, record->output)});
+      }
+      ++index;
+    }
+  }
+  return verdicts;
 }
 
 CrossRecordRow compare_one(const ModelEntry& entry, const std::vector<FitRound>& rounds,
@@ -91,15 +182,7 @@ CrossRecordRow compare_one(const ModelEntry& entry, const std::vector<FitRound>&
   try {
     for (const auto& round : rounds)
       run_round(entry, round, options, row);
-    double sum = 0.0;
-    for (const auto& score : row.scores) {
-      sum += score.metrics.nrmse_percent;
-      if (score.metrics.nrmse_percent >= row.worst_nrmse_percent) {
-        row.worst_nrmse_percent = score.metrics.nrmse_percent;
-        row.worst_record = score.record;
-      }
-    }
-    row.mean_nrmse_percent = sum / static_cast<double>(row.scores.size());
+    summarise(row);
     row.ok = true;
   } catch (const std::exception& error) {
     row.ok = false;
@@ -111,6 +194,11 @@ CrossRecordRow compare_one(const ModelEntry& entry, const std::vector<FitRound>&
 
 CrossRecordComparison run_rounds(const std::vector<FitRound>& rounds,
                                  const CrossRecordOptions& options, const ModelRegistry& registry) {
+  if (!(options.no_fit_percent > 0.0) || !std::isfinite(options.no_fit_percent)) {
+    throw Error(
+        fmt::format("compare: no_fit_percent = {} must be finite and > 0", options.no_fit_percent),
+        "no_fit_percent");
+  }
   const auto entries = compared_models(options.models, options.fit_options, registry);
   CrossRecordComparison comparison;
   comparison.rule = describe(options.validation);
@@ -125,6 +213,14 @@ CrossRecordComparison run_rounds(const std::vector<FitRound>& rounds,
                      if (a.ok != b.ok) return a.ok;
                      return a.ok && a.mean_nrmse_percent < b.mean_nrmse_percent;
                    });
+  comparison.references = yardstick(rounds, options);
+  const auto* best = best_cross_record_reference(comparison);
+  for (auto& row : comparison.ranking) {
+    row.beats_yardstick =
+        row.ok && (best == nullptr || row.mean_nrmse_percent < best->mean_nrmse_percent);
+  }
+  comparison.no_fit_percent = options.no_fit_percent;
+  comparison.no_fit = no_fit_verdicts(rounds, comparison.ranking, options.no_fit_percent);
   return comparison;
 }
 
@@ -174,6 +270,63 @@ CrossRecordComparison compare_leave_one_out(const std::vector<NamedRecord>& reco
   return comparison;
 }
 
+const CrossRecordReference* best_cross_record_reference(const CrossRecordComparison& comparison) {
+  const CrossRecordReference* best = nullptr;
+  for (const auto& reference : comparison.references) {
+    if (reference.ok &&
+        (best == nullptr || reference.mean_nrmse_percent < best->mean_nrmse_percent))
+      best = &reference;
+  }
+  return best;
+}
+
+namespace {
+
+std::string_view yes_no(bool value) {
+  return value ? "yes" : "no";
+}
+
+std::string no_fit_lines(const CrossRecordComparison& comparison) {
+  std::string text;
+  for (const auto& verdict : comparison.no_fit) {
+    std::string seen;
+    for (const auto& finding : verdict.seen.findings)
+      seen += (seen.empty() ? "" : "; ") + finding;
+    text += fmt::format(
+        "No model describes the record {}: the best held-out NRMSE on it is {:.4g} % ({}), above "
+        "{:g} %. {}\n\n",
+        verdict.record, verdict.best_nrmse_percent, verdict.best_model, comparison.no_fit_percent,
+        seen.empty() ? std::string("None of the looks at the record (butterfly, drift, "
+                                   "extrapolation) finds the cause.")
+                     : fmt::format("Seen: {}.", seen));
+  }
+  return text;
+}
+
+std::string yardstick_line(const CrossRecordComparison& comparison) {
+  const auto* best = best_cross_record_reference(comparison);
+  if (best == nullptr) return "Yardstick: no reference predictor could be made on these records.";
+  std::string scores;
+  for (const auto& reference : comparison.references) {
+    if (!scores.empty()) scores += ", ";
+    scores += reference.ok
+                  ? fmt::format("{} {:.4g} %", reference.name, reference.mean_nrmse_percent)
+                  : fmt::format("{} not made ({})", reference.name, reference.error);
+  }
+  std::string losers;
+  for (const auto& row : comparison.ranking) {
+    if (row.ok && !row.beats_yardstick) losers += (losers.empty() ? "" : ", ") + row.model;
+  }
+  return fmt::format(
+      "Yardstick (reference predictors fitted on the same fit records, mean NRMSE over the "
+      "held-out records): {}. Best reference: {}, mean NRMSE {:.4g} %. {}",
+      scores, best->name, best->mean_nrmse_percent,
+      losers.empty() ? std::string("Every fitted model beats it.")
+                     : fmt::format("Models that do not beat it: {}.", losers));
+}
+
+}  // namespace
+
 std::string cross_record_markdown(const CrossRecordComparison& comparison) {
   std::string text =
       comparison.leave_one_out
@@ -188,27 +341,48 @@ std::string cross_record_markdown(const CrossRecordComparison& comparison) {
                 fmt::join(comparison.fit_records, ", "),
                 fmt::join(comparison.validate_records, ", "));
   text += fmt::format("Held-out records: {}.\n\n", comparison.rule);
-  text += "| rank | model | mean held-out NRMSE [%] | worst held-out NRMSE [%] | worst record |";
-  std::string rule = "|---:|---|---:|---:|---|";
+  text += no_fit_lines(comparison);
+  text += yardstick_line(comparison) + "\n\n";
+  text +=
+      "| rank | model | mean held-out NRMSE [%] | worst held-out NRMSE [%] | worst record | beats "
+      "yardstick |";
+  std::string rule = "|---:|---|---:|---:|---|---|";
   for (const auto& record : comparison.validate_records) {
     text += fmt::format(" {} [%] |", detail::markdown_cell(record));
     rule += "---:|";
   }
   text += " parameters | fit time [s] | status |\n" + rule + "---:|---:|---|\n";
+  const auto dashes = [&] {
+    std::string cells;
+    for (std::size_t i = 0; i < comparison.validate_records.size(); ++i)
+      cells += " - |";
+    return cells;
+  };
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format("| {} | {} | {:.4g} | {:.4g} | {} |", ++rank, row.model,
+      text += fmt::format("| {} | {} | {:.4g} | {:.4g} | {} | {} |", ++rank, row.model,
                           row.mean_nrmse_percent, row.worst_nrmse_percent,
-                          detail::markdown_cell(row.worst_record));
+                          detail::markdown_cell(row.worst_record), yes_no(row.beats_yardstick));
       for (const auto& score : row.scores)
         text += fmt::format(" {:.4g} |", score.metrics.nrmse_percent);
       text += fmt::format(" {} | {:.3g} | {} |\n", row.parameters, row.fit_seconds, row.status);
     } else {
-      text += fmt::format("| - | {} | - | - | - |", row.model);
-      for (std::size_t i = 0; i < comparison.validate_records.size(); ++i)
-        text += " - |";
-      text += fmt::format(" - | - | failed: {} |\n", detail::markdown_cell(row.error));
+      text += fmt::format("| - | {} | - | - | - | - |{} - | - | failed: {} |\n", row.model,
+                          dashes(), detail::markdown_cell(row.error));
+    }
+  }
+  for (const auto& reference : comparison.references) {
+    if (reference.ok) {
+      text += fmt::format("| ref | reference: {} | {:.4g} | {:.4g} | {} | - |", reference.name,
+                          reference.mean_nrmse_percent, reference.worst_nrmse_percent,
+                          detail::markdown_cell(reference.worst_record));
+      for (const auto& score : reference.scores)
+        text += fmt::format(" {:.4g} |", score.metrics.nrmse_percent);
+      text += " - | - | reference |\n";
+    } else {
+      text += fmt::format("| ref | reference: {} | - | - | - | - |{} - | - | not made: {} |\n",
+                          reference.name, dashes(), detail::markdown_cell(reference.error));
     }
   }
   return text;
@@ -217,24 +391,38 @@ std::string cross_record_markdown(const CrossRecordComparison& comparison) {
 std::string cross_record_csv(const CrossRecordComparison& comparison) {
   std::string text =
       "rank,model,status,mean_nrmse_percent,worst_nrmse_percent,worst_record,parameters,"
-      "fit_seconds";
+      "fit_seconds,beats_yardstick";
   for (const auto& record : comparison.validate_records)
     text += "," + detail::csv_quoted("nrmse_percent:" + record);
   text += ",message\n";
+  const std::string empty_scores(comparison.validate_records.size(), ',');
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
-      text += fmt::format("{},{},{},{:.8g},{:.8g},{},{},{:.6g}", ++rank, row.model, row.status,
+      text += fmt::format("{},{},{},{:.8g},{:.8g},{},{},{:.6g},{}", ++rank, row.model, row.status,
                           row.mean_nrmse_percent, row.worst_nrmse_percent,
-                          detail::csv_quoted(row.worst_record), row.parameters, row.fit_seconds);
+                          detail::csv_quoted(row.worst_record), row.parameters, row.fit_seconds,
+                          yes_no(row.beats_yardstick));
       for (const auto& score : row.scores)
         text += fmt::format(",{:.8g}", score.metrics.nrmse_percent);
       text += ",\"\"\n";
     } else {
-      text += fmt::format("-,{},failed,,,,,", row.model);
-      for (std::size_t i = 0; i < comparison.validate_records.size(); ++i)
-        text += ",";
-      text += "," + detail::csv_quoted(row.error) + "\n";
+      text += fmt::format("-,{},failed,,,,,,{},{}\n", row.model, empty_scores,
+                          detail::csv_quoted(row.error));
+    }
+  }
+  for (const auto& reference : comparison.references) {
+    const auto name = detail::csv_quoted("reference: " + reference.name);
+    if (reference.ok) {
+      text += fmt::format("reference,{},reference,{:.8g},{:.8g},{},,,", name,
+                          reference.mean_nrmse_percent, reference.worst_nrmse_percent,
+                          detail::csv_quoted(reference.worst_record));
+      for (const auto& score : reference.scores)
+        text += fmt::format(",{:.8g}", score.metrics.nrmse_percent);
+      text += ",\"\"\n";
+    } else {
+      text += fmt::format("reference,{},failed,,,,,,{},{}\n", name, empty_scores,
+                          detail::csv_quoted(reference.error));
     }
   }
   return text;

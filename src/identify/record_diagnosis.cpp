@@ -19,6 +19,7 @@ namespace {
 constexpr double kTurnBack = 0.10;    // of the output range, beyond a branch's end values
 constexpr double kDrift = 0.10;       // of the output range, trend from first to last crossing
 constexpr double kOutOfRange = 0.05;  // of the fit input range, beyond it
+constexpr double kButterflyTravel = 1.0 / 3.0;  // of the input travel, on branches that turn back
 
 double range_of(std::span<const double> values) {
   const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
@@ -34,18 +35,26 @@ std::optional<std::string> butterfly(std::span<const double> input, std::span<co
     return std::nullopt;  // too short or constant: no branches to look at
   }
   std::size_t turning = 0;
+  double travel = 0.0;          // input travel of all branches
+  double turning_travel = 0.0;  // of the branches that turn back
   for (const auto& branch : branches) {
     const auto y = output.subspan(branch.first, branch.samples());
     const auto [lowest, highest] = std::minmax_element(y.begin(), y.end());
     const double beyond =
         std::max(*highest - std::max(y.front(), y.back()), std::min(y.front(), y.back()) - *lowest);
-    if (beyond > kTurnBack * output_range) ++turning;
+    const double branch_travel =
+        std::abs(input[branch.first + branch.samples() - 1] - input[branch.first]);
+    travel += branch_travel;
+    if (beyond > kTurnBack * output_range) {
+      ++turning;
+      turning_travel += branch_travel;
+    }
   }
-  if (turning < 2 || 2 * turning < branches.size()) return std::nullopt;
+  if (turning == 0 || !(turning_travel >= kButterflyTravel * travel)) return std::nullopt;
   return fmt::format(
-      "butterfly: the output turns back on {} of {} input branches (non-monotone "
-      "output vs. input)",
-      turning, branches.size());
+      "butterfly: the output turns back on {} of {} input branches, {:.0f} % of the input "
+      "travel (non-monotone output vs. input)",
+      turning, branches.size(), 100.0 * turning_travel / travel);
 }
 
 // Slope of the least-squares line through values[i] over i, times (n - 1): the trend's change.
@@ -107,6 +116,18 @@ std::optional<std::string> extrapolation(std::span<const double> fit_input,
       *held_low, *held_high, *fit_low, *fit_high);
 }
 
+// The output range, or 0 when the looks cannot use the output (flat or not finite).
+double usable_range(std::span<const double> output) {
+  const double output_range = range_of(output);
+  return output_range > 0.0 && std::isfinite(output_range) ? output_range : 0.0;
+}
+
+void note(RecordDiagnosis& diagnosis, bool& flag, std::optional<std::string> finding) {
+  if (!finding) return;
+  flag = true;
+  diagnosis.findings.push_back(std::move(*finding));
+}
+
 }  // namespace
 
 RecordDiagnosis diagnose_record(std::span<const double> input, std::span<const double> output,
@@ -121,20 +142,32 @@ RecordDiagnosis diagnose_record(std::span<const double> input, std::span<const d
                     input.size()));
   }
   RecordDiagnosis diagnosis;
-  const double output_range = range_of(output);
-  if (!(output_range > 0.0) || !std::isfinite(output_range)) return diagnosis;
-  const auto note = [&](bool& flag, std::optional<std::string> finding) {
-    if (!finding) return;
-    flag = true;
-    diagnosis.findings.push_back(std::move(*finding));
-  };
-  note(diagnosis.butterfly, butterfly(input, output, output_range));
-  note(diagnosis.drift, drift(input, output, output_range));
+  const double output_range = usable_range(output);
+  if (output_range == 0.0) return diagnosis;
+  note(diagnosis, diagnosis.butterfly, butterfly(input, output, output_range));
+  note(diagnosis, diagnosis.drift, drift(input, output, output_range));
   if (split.has_validation()) {
-    note(diagnosis.extrapolation,
+    note(diagnosis, diagnosis.extrapolation,
          extrapolation(input.subspan(split.fit_begin, split.fit_size()),
                        input.subspan(split.validation_begin, split.validation_size())));
   }
+  return diagnosis;
+}
+
+RecordDiagnosis diagnose_held_out_record(std::span<const double> fit_input,
+                                         std::span<const double> held_input,
+                                         std::span<const double> held_output) {
+  require_same_size(held_input.size(), "held-out input", held_output.size(), "held-out output");
+  if (fit_input.empty() || held_input.empty()) {
+    throw Error(fmt::format("record diagnosis: {} fit and {} held-out samples; both must be > 0",
+                            fit_input.size(), held_input.size()));
+  }
+  RecordDiagnosis diagnosis;
+  const double output_range = usable_range(held_output);
+  if (output_range == 0.0) return diagnosis;
+  note(diagnosis, diagnosis.butterfly, butterfly(held_input, held_output, output_range));
+  note(diagnosis, diagnosis.drift, drift(held_input, held_output, output_range));
+  note(diagnosis, diagnosis.extrapolation, extrapolation(fit_input, held_input));
   return diagnosis;
 }
 

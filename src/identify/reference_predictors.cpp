@@ -173,16 +173,37 @@ std::vector<ReferenceScore> reference_predictions(std::span<const double> input,
                     split.fit_begin, split.fit_end, split.validation_begin, split.validation_end,
                     input.size()));
   }
-  const auto fit_input = input.subspan(split.fit_begin, split.fit_size());
-  const auto fit_output = output.subspan(split.fit_begin, split.fit_size());
-  const auto held_input = input.subspan(split.validation_begin, split.validation_size());
-  const auto held_output = output.subspan(split.validation_begin, split.validation_size());
-  const std::size_t held = held_input.size();
+  return reference_predictions_on_record(
+      input.subspan(split.fit_begin, split.fit_size()),
+      output.subspan(split.fit_begin, split.fit_size()),
+      input.subspan(split.validation_begin, split.validation_size()),
+      output.subspan(split.validation_begin, split.validation_size()), options);
+}
 
+std::vector<ReferenceScore> reference_predictions_on_record(std::span<const double> fit_input,
+                                                            std::span<const double> fit_output,
+                                                            std::span<const double> held_input,
+                                                            std::span<const double> held_output,
+                                                            const ReferenceOptions& options) {
+  require_same_size(fit_input.size(), "fit input", fit_output.size(), "fit output");
+  require_same_size(held_input.size(), "held-out input", held_output.size(), "held-out output");
+  if (fit_input.empty() || held_input.empty()) {
+    throw Error(
+        fmt::format("reference predictors: {} fit and {} held-out samples; both must be "
+                    "> 0",
+                    fit_input.size(), held_input.size()));
+  }
+  const std::size_t held = held_input.size();
   std::vector<ReferenceScore> scores;
   const auto add = [&](std::string name, const auto& predict) {
     try {
-      scores.push_back(scored(name, held_output, predict()));
+      auto predicted = predict();
+      if (options.align_first_sample) {
+        const double shift = held_output.front() - predicted.front();
+        for (double& value : predicted)
+          value += shift;
+      }
+      scores.push_back(scored(name, held_output, std::move(predicted)));
     } catch (const std::exception& error) {
       scores.push_back({std::move(name), std::nullopt, error.what(), {}});
     }

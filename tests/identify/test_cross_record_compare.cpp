@@ -81,7 +81,7 @@ TEST(CrossRecordCompare, FitOnOneAmplitudeRankOnAnother) {
   EXPECT_NE(markdown.find("| 1 | pi |"), std::string::npos) << markdown;
   const auto csv = cross_record_csv(comparison);
   EXPECT_EQ(csv.rfind("rank,model,status,mean_nrmse_percent,worst_nrmse_percent,worst_record,"
-                      "parameters,fit_seconds,\"nrmse_percent:a0.8\",message\n",
+                      "parameters,fit_seconds,beats_yardstick,\"nrmse_percent:a0.8\",message\n",
                       0),
             0u)
       << csv;
@@ -140,6 +140,73 @@ TEST(CrossRecordCompare, LeaveOneOut) {
                 .find("Leave-one-out over the records a0.6, a1.0, "
                       "a1.5"),
             std::string::npos);
+}
+
+TEST(CrossRecordCompare, YardstickOfReferencePredictors) {
+  const auto large = pi_record("a1.5", sine_record(1.5, 3, false));
+  const auto small = pi_record("a0.8", sine_record(0.8, 3, false));
+  auto options = pi_against_bouc_wen();
+  options.models = {"pi"};
+  options.fit_options.erase("bouc_wen");
+  const auto comparison = compare_across_records({large}, {small}, options);
+  // Start "rest": the held-out record does not follow the fit record in time, so no ARX.
+  ASSERT_EQ(comparison.references.size(), 3u) << cross_record_markdown(comparison);
+  EXPECT_EQ(comparison.references[0].name, "mean");
+  EXPECT_EQ(comparison.references[1].name, "last value held");
+  for (const auto& reference : comparison.references) {
+    ASSERT_TRUE(reference.ok) << reference.name << ": " << reference.error;
+    ASSERT_EQ(reference.scores.size(), 1u);
+    EXPECT_EQ(reference.mean_nrmse_percent, reference.scores[0].metrics.nrmse_percent);
+  }
+  // The mean predictor by hand: the fit record's mean output held over the held-out record.
+  double mean = 0.0;
+  for (const double y : large.output)
+    mean += y / static_cast<double>(large.output.size());
+  double squares = 0.0;
+  for (const double y : small.output)
+    squares += (y - mean) * (y - mean);
+  EXPECT_NEAR(comparison.references[0].scores[0].metrics.rmse,
+              std::sqrt(squares / static_cast<double>(small.output.size())), 1e-12);
+  const auto& pi = comparison.ranking.front();
+  EXPECT_TRUE(pi.beats_yardstick);
+  EXPECT_TRUE(comparison.no_fit.empty());
+  const auto markdown = cross_record_markdown(comparison);
+  EXPECT_NE(markdown.find("Every fitted model beats it."), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| ref | reference: mean |"), std::string::npos) << markdown;
+  const auto csv = cross_record_csv(comparison);
+  EXPECT_NE(csv.find("\nreference,\"reference: mean\",reference,"), std::string::npos) << csv;
+  // Start "continue": the held-out record follows the fit record, and ARX joins the yardstick.
+  options.validation.start = ValidationStart::continued;
+  const auto continued = compare_across_records({large}, {small}, options);
+  ASSERT_EQ(continued.references.size(), 4u);
+  EXPECT_EQ(continued.references[3].name, "ARX(2,2)");
+}
+
+TEST(CrossRecordCompare, NoFitVerdictNamesWhatTheRecordShows) {
+  // Held out: a record whose output is the square of the input (a butterfly) over twice the
+  // fitted input range; the PI model fitted on a plain loop cannot describe it.
+  const auto plain = pi_record("plain", sine_record(1.0, 2, false));
+  NamedRecord butterfly{"butterfly", sine_record(2.0, 2, false), {}};
+  for (const double v : butterfly.input)
+    butterfly.output.push_back(v * v);
+  CrossRecordOptions options;
+  options.models = {"pi"};
+  const auto comparison = compare_across_records({plain}, {butterfly}, options);
+  ASSERT_TRUE(comparison.ranking.front().ok) << comparison.ranking.front().error;
+  ASSERT_EQ(comparison.no_fit.size(), 1u) << cross_record_markdown(comparison);
+  const auto& verdict = comparison.no_fit.front();
+  EXPECT_EQ(verdict.record, "butterfly");
+  EXPECT_EQ(verdict.best_model, "pi");
+  EXPECT_GT(verdict.best_nrmse_percent, 20.0);
+  EXPECT_TRUE(verdict.seen.butterfly);
+  EXPECT_TRUE(verdict.seen.extrapolation);
+  EXPECT_NE(cross_record_markdown(comparison).find("No model describes the record butterfly"),
+            std::string::npos);
+  // Above a threshold higher than every error, there is no verdict.
+  options.no_fit_percent = 1e6;
+  EXPECT_TRUE(compare_across_records({plain}, {butterfly}, options).no_fit.empty());
+  options.no_fit_percent = 0.0;
+  EXPECT_HYST_ERROR(compare_across_records({plain}, {butterfly}, options), "no_fit_percent");
 }
 
 TEST(CrossRecordCompare, BadRecordsAreRejectedBeforeAnyFit) {

@@ -72,5 +72,66 @@ TEST(RecordDiagnosis, HeldOutInputBeyondTheFittedRange) {
   EXPECT_HYST_ERROR(diagnose_record(v, v, {0, 300, 300, 401}), "lies outside the 400 samples");
 }
 
+// One period of a bipolar triangle 0 -> 1 -> -1 -> 0 (branches of input travel 1, 2 and 1) whose
+// output is monotone on the rising branches and turns back on the falling one only, as the
+// strain of a ceramic whose polarisation switches once in the period does.
+struct OnePeriod {
+  std::vector<double> v;
+  std::vector<double> y;
+};
+
+OnePeriod one_period_switching_once() {
+  OnePeriod record;
+  const auto add = [&](double from, double to, std::size_t steps, auto output) {
+    for (std::size_t k = 1; k <= steps; ++k) {
+      const double x = from + (to - from) * static_cast<double>(k) / static_cast<double>(steps);
+      record.v.push_back(x);
+      record.y.push_back(output(x));
+    }
+  };
+  record.v.push_back(0.0);
+  record.y.push_back(0.0);
+  add(0.0, 1.0, 50, [](double x) { return x; });
+  // Falling: down to -0.5 at x = -0.5, then back up to 0.5 at x = -1: it goes 1.0 below the
+  // branch's lower end value, 100 % of the output range of 1.5.
+  add(1.0, -1.0, 100, [](double x) { return x >= -0.5 ? x : -1.5 - 2.0 * x; });
+  add(-1.0, 0.0, 50, [](double x) { return 0.5 - 0.5 * (x + 1.0); });
+  return record;
+}
+
+TEST(RecordDiagnosis, ButterflyOnOneBranchThroughTheWholeRange) {
+  // One turning branch of three: half the input travel, over the third the rule asks for.
+  const auto record = one_period_switching_once();
+  const auto diagnosis = diagnose_record(record.v, record.y, {0, 200, 200, 201});
+  EXPECT_TRUE(diagnosis.butterfly);
+  ASSERT_FALSE(diagnosis.findings.empty());
+  EXPECT_NE(diagnosis.findings.front().find("1 of 3 input branches, 50 % of the input travel"),
+            std::string::npos)
+      << diagnosis.findings.front();
+}
+
+TEST(RecordDiagnosis, ShortTurningBranchIsNoButterfly) {
+  // A sine loop whose last quarter-period wiggles back: one turning branch of input travel 1 in
+  // a total of 16 (four periods; a sixteenth, below a third).
+  auto v = sine(401);
+  std::vector<double> y(v.begin(), v.end());
+  for (std::size_t k = 375; k <= 400; ++k)  // v rises -1 -> 0 here; y dips below -1 and back
+    y[k] = v[k] - 0.8 * std::sin(std::numbers::pi * static_cast<double>(k - 375) / 25.0);
+  const auto diagnosis = diagnose_record(v, y, {0, 300, 300, 401});
+  EXPECT_FALSE(diagnosis.butterfly) << (diagnosis.findings.empty() ? "" : diagnosis.findings[0]);
+}
+
+TEST(RecordDiagnosis, HeldOutRecordAgainstTheFittedRecords) {
+  const auto record = one_period_switching_once();
+  const std::vector<double> fitted = {-0.5, 0.5, -0.5};
+  const auto diagnosis = diagnose_held_out_record(fitted, record.v, record.y);
+  EXPECT_TRUE(diagnosis.butterfly);
+  EXPECT_TRUE(diagnosis.extrapolation);  // -1..1 beyond the fitted -0.5..0.5
+  EXPECT_FALSE(diagnose_held_out_record(record.v, record.v, record.v).extrapolation);
+  EXPECT_FALSE(diagnose_held_out_record(record.v, record.v, record.v).butterfly);
+  EXPECT_HYST_ERROR(diagnose_held_out_record(fitted, record.v, fitted), "held-out");
+  EXPECT_HYST_ERROR(diagnose_held_out_record({}, record.v, record.y), "0 fit");
+}
+
 }  // namespace
 }  // namespace hyst

@@ -158,6 +158,7 @@ void run(const CompareCommandOptions& options) {
     CrossRecordOptions cross;
     if (!options.models.empty()) cross.models = split_list(options.models, "--models", "pi,narx");
     cross.fit_options = fit_options(options.option_pairs);
+    cross.no_fit_percent = options.no_fit_percent;
     run_cross_record(options, std::move(cross));
     return;
   }

@@ -18,6 +18,15 @@
 //! Ranking: the models by mean held-out NRMSE (lowest first), then the failed ones in the order
 //! they were asked for. A model fails as a whole when any of its fits or predictions fails (the
 //! reason names the record); the others still run.
+//!
+//! Yardstick: the reference predictors of reference_predictors.hpp (mean, last value held, a
+//! cubic y(v); ARX only with start "continue", where a held-out record follows the fit records in
+//! time) are fitted on the same joined fit records and scored on each held-out record with the
+//! same alignment as the models; a model beats the yardstick when its mean held-out NRMSE is below
+//! the best reference's mean. No-fit verdict: for each held-out record on which even the best
+//! model's NRMSE exceeds `no_fit_percent`, the tables say that no model describes that record,
+//! with what the looks of record_diagnosis.hpp see on it (butterfly, drift, and extrapolation
+//! beyond the input range of the records the models were fitted on).
 
 #include <cstddef>
 #include <map>
@@ -28,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/record_diagnosis.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
 
@@ -47,6 +57,10 @@ struct CrossRecordOptions {
   std::map<std::string, nlohmann::json> fit_options;
   //! How each held-out record is predicted.
   ValidationRule validation;
+  //! Best held-out NRMSE [%] on a record above which no model is said to describe it (> 0).
+  double no_fit_percent = 20.0;
+  //! The records are time series (ARX joins the yardstick when the start is "continue").
+  bool time_series = true;
 };
 
 //! The error of one model on one held-out record, fitted on `fitted_on`.
@@ -68,14 +82,37 @@ struct CrossRecordRow {
   std::size_t parameters = 0;        //!< of the (last) fitted model
   double fit_seconds = 0.0;          //!< all fits together
   std::string status;                //!< FitReport::status() of the (last) fit
+  bool beats_yardstick = false;      //!< mean NRMSE below the best reference's mean
+};
+
+//! One reference predictor of the yardstick, scored like a model row.
+struct CrossRecordReference {
+  std::string name;  //!< "mean", "last value held", ...
+  bool ok = false;
+  std::string error;                 //!< why not, when !ok
+  std::vector<HeldOutScore> scores;  //!< one per held-out record, in the order given
+  double mean_nrmse_percent = 0.0;
+  double worst_nrmse_percent = 0.0;
+  std::string worst_record;
+};
+
+//! A held-out record that no model describes.
+struct NoFitVerdict {
+  std::string record;
+  std::string best_model;           //!< the model with the lowest NRMSE on this record
+  double best_nrmse_percent = 0.0;  //!< its NRMSE there [%]
+  RecordDiagnosis seen;             //!< what the looks at the record find
 };
 
 struct CrossRecordComparison {
   bool leave_one_out = false;
-  std::vector<std::string> fit_records;       //!< empty in leave-one-out mode
-  std::vector<std::string> validate_records;  //!< every record in leave-one-out mode
-  std::string rule;                           //!< describe(validation rule)
-  std::vector<CrossRecordRow> ranking;        //!< best first; failed rows last
+  std::vector<std::string> fit_records;          //!< empty in leave-one-out mode
+  std::vector<std::string> validate_records;     //!< every record in leave-one-out mode
+  std::string rule;                              //!< describe(validation rule)
+  std::vector<CrossRecordRow> ranking;           //!< best first; failed rows last
+  std::vector<CrossRecordReference> references;  //!< the yardstick
+  double no_fit_percent = 20.0;                  //!< the threshold of the no-fit verdict [%]
+  std::vector<NoFitVerdict> no_fit;              //!< held-out records no model describes
 };
 
 //! Fits each model once on `fit` (joined) and scores it on every record of `validate`. Throws
@@ -93,11 +130,17 @@ CrossRecordComparison compare_leave_one_out(
     const std::vector<NamedRecord>& records, const CrossRecordOptions& options = {},
     const ModelRegistry& registry = ModelRegistry::builtin());
 
-//! The ranking as Markdown: a line naming the fit and held-out records and the rule, then one row
-//! per model with its mean, worst and per-record held-out NRMSE [%].
+//! The best reference predictor (lowest mean NRMSE), or null when none could be made.
+const CrossRecordReference* best_cross_record_reference(const CrossRecordComparison& comparison);
+
+//! The ranking as Markdown: a line naming the fit and held-out records and the rule, the no-fit
+//! verdicts, the yardstick line, then one row per model with its mean, worst and per-record
+//! held-out NRMSE [%] and one row per reference predictor.
 std::string cross_record_markdown(const CrossRecordComparison& comparison);
 //! The ranking as CSV: rank,model,status,mean_nrmse_percent,worst_nrmse_percent,worst_record,
-//! parameters,fit_seconds, one column "nrmse_percent:RECORD" per held-out record, message.
+//! parameters,fit_seconds,beats_yardstick, one column "nrmse_percent:RECORD" per held-out record,
+//! message; then one row per reference predictor with rank "reference" and model
+//! "reference: NAME".
 std::string cross_record_csv(const CrossRecordComparison& comparison);
 
 }  // namespace hyst

@@ -5,9 +5,10 @@
 //!
 //! - butterfly: the output turns back on input branches (data/branches.hpp, band 2 % of the input
 //!   range): on a branch, the output goes beyond both of its end values by more than 10 % of the
-//!   record's output range. Flagged when at least half of the branches (and at least two) do so,
-//!   as the strain of a piezo ceramic driven through its coercive field does. Rate-independent
-//!   hysteresis models with monotone branches cannot follow that.
+//!   record's output range. Flagged when the branches that do so cover at least a third of the
+//!   input travel of all branches (one branch through the whole input range of a one-period
+//!   record is enough), as the strain of a piezo ceramic driven through its coercive field turns
+//!   back. Rate-independent hysteresis models with monotone branches cannot follow that.
 //! - drift: the output at a repeated input value trends: at every crossing of the input through
 //!   the middle of its range in one direction (rising or falling) the output is interpolated, and
 //!   a straight line is fitted through these outputs over the crossing number; flagged when that
@@ -36,5 +37,13 @@ struct RecordDiagnosis {
 //! look simply does not raise its flag.
 RecordDiagnosis diagnose_record(std::span<const double> input, std::span<const double> output,
                                 const DataSplit& split);
+
+//! The looks at a separate held-out record (cross_record_compare.hpp): butterfly and drift on the
+//! held-out record itself, extrapolation of its input beyond the input range of the records the
+//! models were fitted on (`fit_input`, joined). Throws hyst::Error when the held-out lengths
+//! differ or a record is empty.
+RecordDiagnosis diagnose_held_out_record(std::span<const double> fit_input,
+                                         std::span<const double> held_input,
+                                         std::span<const double> held_output);
 
 }  // namespace hyst

@@ -40,7 +40,12 @@ struct ReferenceOptions {
   std::size_t polynomial_degree = 3;
   std::size_t arx_outputs = 2;  //!< past outputs y[k-1]..y[k-na]
   std::size_t arx_inputs = 2;   //!< inputs v[k]..v[k-nb+1]
-  bool time_series = true;      //!< false: the samples are not in time order; no ARX
+  //! false: the samples are not in time order, or the held-out samples do not follow the fit
+  //! samples in time (a separate record): no ARX.
+  bool time_series = true;
+  //! Shift every prediction to the measured first held-out sample, as the models' predictions
+  //! of separately zeroed records are (validation_rule.hpp, "first-sample").
+  bool align_first_sample = false;
 };
 
 //! Coefficients of a fitted ARX model (see the file comment) in the data's own units.
@@ -79,6 +84,17 @@ std::vector<ReferenceScore> reference_predictions(std::span<const double> input,
                                                   std::span<const double> output,
                                                   const DataSplit& split,
                                                   const ReferenceOptions& options = {});
+
+//! The same on a held-out record that is given apart from the fit samples
+//! (cross_record_compare.hpp: the fit records joined, one separate record held out). ARX (with
+//! options.time_series) takes its first past values from the end of the fit samples, so it is meant
+//! only for a held-out record that continues them in time. Throws hyst::Error when lengths differ
+//! or a part is empty.
+std::vector<ReferenceScore> reference_predictions_on_record(std::span<const double> fit_input,
+                                                            std::span<const double> fit_output,
+                                                            std::span<const double> held_input,
+                                                            std::span<const double> held_output,
+                                                            const ReferenceOptions& options = {});
 
 //! The reference with the lowest held-out NRMSE, or null when none has metrics.
 const ReferenceScore* best_reference(const std::vector<ReferenceScore>& references);
