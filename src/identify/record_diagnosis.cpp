@@ -16,7 +16,7 @@
 namespace hyst {
 namespace {
 
-constexpr double kTurnBack = 0.10;    // of the output range, beyond a branch's end values
+constexpr double kTurnBack = 0.05;    // of the output range, beyond a branch's end values
 constexpr double kDrift = 0.10;       // of the output range, trend from first to last crossing
 constexpr double kOutOfRange = 0.05;  // of the fit input range, beyond it
 constexpr double kButterflyTravel = 1.0 / 3.0;  // of the input travel, on branches that turn back
