@@ -23,7 +23,7 @@ DEMO_OUT   ?= out/demo
 # Debian 12 packages the build and the tests need.
 DEBIAN_PACKAGES := cmake make g++ pkg-config \
   libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  libmatio-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libceres-dev libboost-dev \
+  libmatio-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libboost-dev \
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest gnuplot-nox \
   clang libclang-rt-14-dev chromium
 

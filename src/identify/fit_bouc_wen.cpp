@@ -44,6 +44,7 @@ BoucWenFit fit_bouc_wen(std::span<const double> input, std::span<const double> o
   ms.lower = {1e-3, 0.5, 1.0, 0.0, 0.0};
   ms.upper = {1e3, 5.0, 5.0, 10.0, 10.0};
   if (!options.fit_n) ms.fixed = {2};
+  ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   std::vector<std::array<double, 5>> starts;
@@ -60,6 +61,13 @@ BoucWenFit fit_bouc_wen(std::span<const double> input, std::span<const double> o
   w.n = q[2];
   w.kx = q[3] * kernel.scale[3];
   w.kw = q[4] * kernel.scale[4];
+  if (!(w.kx + w.kw * w.rho > 0.0)) {
+    throw Error(
+        "Bouc-Wen fit: the best fit is a constant output (kx = kw = 0, both at their lower "
+        "bound): the output does not follow the input as a hysteretic spring; a record of a "
+        "mass on a spring (displacement lagging the force) needs bouc_wen_oscillator",
+        "output");
+  }
   BoucWen model(BoucWen::from_normalised(w, options.substeps));
   outcome.report.model = "bouc_wen";
   outcome.report.method = "levenberg-marquardt (ceres, autodiff through RK4), normalised form";

@@ -195,6 +195,7 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
   ms.lower = {1e-3, 0.0, 0.0, 1e-3, -1e3, -1e3, 1.0};
   ms.upper = {1e3, 1e3 + 1e3 * (first[1] == 0.0), 1e2, 1e2, 1e3, 1e3, 4.0};
   if (!options.fit_nu) ms.fixed = {kNu};
+  ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;

@@ -85,6 +85,7 @@ DuhemFit fit_duhem(std::span<const double> input, std::span<const double> output
   detail::MultistartOptions<5> ms;
   ms.lower = {1e-3, 0.0, 0.0, 1e-3, -1.0};
   ms.upper = {1e3, 20.0, 20.0, 1e2, 1.0};
+  ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   std::vector<std::array<double, 5>> starts;
@@ -115,6 +116,7 @@ BacklashLikeFit fit_backlash_like(std::span<const double> input, std::span<const
   detail::MultistartOptions<3> ms;
   ms.lower = {1e-3, 1e-3, -1.0};
   ms.upper = {1e3, 1e2, 0.999};
+  ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   std::vector<std::array<double, 3>> starts;

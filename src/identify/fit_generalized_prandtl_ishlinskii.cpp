@@ -142,19 +142,12 @@ ceres::Solver::Summary solve(const CostFunctor& functor, GpiParameterVector& the
   // rho is the scale gauge (an exact symmetry): held, never iterated.
   problem.SetManifold(theta.data(),
                       new ceres::SubsetManifold(kGpiParameterCount, {static_cast<int>(kRho)}));
-  ceres::Solver::Options options;
-  options.minimizer_type = ceres::TRUST_REGION;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = static_cast<int>(iterations);
-  options.function_tolerance = function_tolerance;
-  options.gradient_tolerance = 1e-12;
-  options.parameter_tolerance = 1e-10;
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  options.num_threads = 1;
+  auto options = detail::levenberg_marquardt_options(iterations, function_tolerance);
+  detail::StagnationStop stagnation;
+  options.callbacks.push_back(&stagnation);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
+  if (stagnation.stopped()) summary.message = stagnation.message();
   return summary;
 }
 

@@ -359,6 +359,7 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   detail::MultistartOptions<kParameters> ms;
   ms.lower = {0.1, 1e-3, 0.05, 0.0, 0.0};
   ms.upper = {10.0, 1e3, 1e3, 0.99, 1e3};
+  ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;

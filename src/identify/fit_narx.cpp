@@ -532,14 +532,8 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   }
   const double initial_cost = one_step_cost(rows, shape, weights);
 
-  ceres::Solver::Options solver;
-  solver.minimizer_type = ceres::TRUST_REGION;
-  solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  solver.linear_solver_type = ceres::DENSE_QR;
-  solver.max_num_iterations = static_cast<int>(options.max_iterations);
-  solver.num_threads = 1;
-  solver.logging_type = ceres::SILENT;
-  solver.function_tolerance = 1e-10;
+  auto solver =
+      detail::levenberg_marquardt_options(options.max_iterations, detail::kFunctionTolerance);
   std::optional<EarlyStopping> stopping;
   if (monitor > 0) {
     stopping.emplace(shape, weights,
@@ -548,8 +542,11 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
     solver.update_state_every_iteration = true;
     solver.callbacks.push_back(&*stopping);
   }
+  detail::StagnationStop one_step_stagnation;
+  solver.callbacks.push_back(&one_step_stagnation);
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
+  if (one_step_stagnation.stopped()) summary.message = one_step_stagnation.message();
 
   NarxFit result{Narx(shape), {}, {}, {}, {}, 0, 1};
   std::string stopping_text;
@@ -575,7 +572,11 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
     }
     solver.max_num_iterations = static_cast<int>(options.simulation_iterations);
     if (stopping) stopping->start_from(weights, stopping->best_error());
+    detail::StagnationStop simulation_stagnation;
+    solver.callbacks.back() = &simulation_stagnation;  // a fresh cost history for this stage
     ceres::Solve(solver, &simulation_problem, &simulation_summary);
+    if (simulation_stagnation.stopped())
+      simulation_summary.message = simulation_stagnation.message();
     if (stopping && !stopping->best().empty()) weights = stopping->best();
   }
   if (stopping) {

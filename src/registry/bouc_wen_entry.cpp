@@ -93,6 +93,7 @@ FitOutcome fit(const FitRequest& request) {
   BoucWenFitOptions options;
   options.fit_n = fields.boolean_or("fit_n", options.fit_n);
   options.substeps = fields.count_or("substeps", options.substeps);
+  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
   fields.finish();
   options.validate_fraction = request.validate_fraction;
@@ -123,6 +124,8 @@ ModelEntry bouc_wen_entry() {
       {"fit_n", "boolean", "", "also fit the exponent n (false: n = 1)"},
       {"substeps", "whole number", "", "RK4 steps per sample (20)"},
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
+      {"global_evaluations", "whole number", "",
+       "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
   entry.create = &create;
   entry.fit = &fit;

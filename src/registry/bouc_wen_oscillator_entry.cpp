@@ -94,6 +94,7 @@ FitOutcome fit(const FitRequest& request) {
   options.sample_time = fields.number_or("sample_time", options.sample_time);
   options.substeps = fields.count_or("substeps", 20);
   options.fit_nu = fields.boolean_or("fit_nu", options.fit_nu);
+  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
   fields.finish();
   options.validate_fraction = request.validate_fraction;
@@ -129,7 +130,9 @@ ModelEntry bouc_wen_oscillator_entry() {
       {"sample_time", "number", "s", "sample time of the record (1/750)"},
       {"substeps", "whole number", "", "RK4 steps per sample (20)"},
       {"fit_nu", "boolean", "", "also fit nu (false: nu = 1)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (60)"},
+      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (1000)"},
+      {"global_evaluations", "whole number", "",
+       "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
   entry.create = &create;
   entry.fit = &fit;

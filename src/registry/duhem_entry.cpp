@@ -78,6 +78,7 @@ FitOutcome fit(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   DuhemFitOptions options;
   options.substeps = fields.count_or("substeps", options.substeps);
+  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
   fields.finish();
   options.validate_fraction = request.validate_fraction;
@@ -106,6 +107,8 @@ ModelEntry duhem_entry() {
   entry.fit_options = {
       {"substeps", "whole number", "", "RK4 steps per sample (20)"},
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
+      {"global_evaluations", "whole number", "",
+       "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
   entry.create = &create;
   entry.fit = &fit;

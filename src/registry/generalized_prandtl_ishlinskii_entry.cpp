@@ -167,7 +167,8 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
   entry.fit_options = {
       {"m", "whole number", "", "operators j = 0..m (10)"},
       {"initial_state", "string", "", "rest (at the first input, rising) or periodic"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations per start (200)"},
+      {"max_iterations", "whole number", "",
+       "Levenberg-Marquardt iterations of the best start (3000)"},
       {"input_min", "number", "input units", "operating range (default: the data's)"},
       {"input_max", "number", "input units", "operating range (default: the data's)"},
   };

@@ -93,6 +93,7 @@ FitOutcome fit(const FitRequest& request) {
     options.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
   }
   options.periodic = fields.boolean_or("periodic", false);
+  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
   fields.finish();
   if (!(request.validate_fraction >= 0.0 && request.validate_fraction < 1.0)) {
@@ -138,7 +139,9 @@ ModelEntry jiles_atherton_entry() {
   entry.fit_options = {
       {"variant", "string", "", "original or venkataraman"},
       {"periodic", "boolean", "", "the record is one loop in steady state (false: demagnetised)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (200)"},
+      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (2000)"},
+      {"global_evaluations", "whole number", "",
+       "cost evaluations of the global search before the local starts, 0 = none (0)"},
   };
   entry.create = &create;
   entry.fit = &fit;

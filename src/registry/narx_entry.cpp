@@ -169,7 +169,7 @@ ModelEntry narx_entry() {
       {"seed", "whole number", "", "seed of the initial weights (1)"},
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
       {"simulation_iterations", "whole number", "",
-       "LM iterations on the free-run error after the one-step fit (20)"},
+       "LM iterations on the free-run error after the one-step fit (100)"},
       {"patience", "whole number", "", "early stopping: iterations without improvement (15)"},
       {"early_stopping_fraction", "number", "", "end of the fit part monitored in free run (0.2)"},
       {"regularization", "number", "", "ridge weight on the network weights (1e-6)"},

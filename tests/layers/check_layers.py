@@ -17,6 +17,7 @@ import sys
 # Which link target a third-party #include needs.
 THIRD_PARTY = {
     "ceres/": "Ceres::ceres",
+    "nlopt.hpp": "NLopt::nlopt",
     "matio.h": "PkgConfig::MATIO",
     "zlib.h": "ZLIB::ZLIB",
     "nlohmann/": "nlohmann_json::nlohmann_json",

@@ -20,6 +20,9 @@ namespace hyst {
 struct BoucWenFitOptions {
   bool fit_n = false;  //!< also fit the exponent n (>= 1)
   std::size_t substeps = 20;
+  //! Cost evaluations of the global stage (NLopt CRS2-LM over the bounded box) before the
+  //! local starts; its best point is one more start. 0: data-derived starts only.
+  std::size_t global_evaluations = 300;
   std::size_t screening_iterations = 10;
   std::size_t max_iterations = 100;
   double validate_fraction = 0.0;  //!< last part of the record held out, [0, 1)

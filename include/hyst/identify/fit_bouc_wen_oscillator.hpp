@@ -47,9 +47,12 @@ struct BoucWenOscillatorFitOptions {
   bool fit_nu = false;               //!< also fit nu (>= 1); otherwise nu of the start (1)
   //! Starting points (beta of the first sets the gauge); empty = data-derived starts.
   std::vector<BoucWenOscillator::Params> starts;
+  //! Cost evaluations of the global stage (NLopt CRS2-LM over the bounded box) before the
+  //! local starts; its best point is one more start. 0: data-derived starts only.
+  std::size_t global_evaluations = 300;
   std::size_t screening_iterations = 4;
-  std::size_t max_iterations = 60;
-  double function_tolerance = 1e-12;
+  std::size_t max_iterations = 1000;
+  double function_tolerance = 1e-9;
   //! Fraction of a single record, at its end, held out for validation; [0, 1).
   double validate_fraction = 0.0;
 };

@@ -101,9 +101,9 @@ struct GpiFitOptions {
   //! Levenberg-Marquardt iterations of each start in the screening stage (>= 1).
   std::size_t screening_iterations = 15;
   //! Levenberg-Marquardt iterations of the best start after screening (>= 0).
-  std::size_t max_iterations = 200;
+  std::size_t max_iterations = 3000;
   //! Ceres' relative cost-decrease tolerance (> 0): stop when |d cost| / cost < it.
-  double function_tolerance = 1e-10;
+  double function_tolerance = 1e-9;
   //! Operating range for the ordering check of the fitted model [input units]; unset = the range
   //! of all inputs (fit and validation), widened by 1 % of the span on each side.
   std::optional<double> input_min;

@@ -38,9 +38,13 @@ struct JilesAthertonFitOptions {
   JilesAthertonVariant variant = JilesAthertonVariant::original;
   std::vector<JilesAtherton::Params> starts;  //!< empty = the data-derived starts
   double max_field_step = 0.0;                //!< [A/m]; 0 = peak-to-peak field / 2000
+  //! Cost evaluations of the global stage (NLopt CRS2-LM over the bounded box) before the
+  //! local starts; its best point is one more start. 0 (default, since every evaluation
+  //! simulates every loop): the data-derived starts only.
+  std::size_t global_evaluations = 0;
   std::size_t screening_iterations = 8;
-  std::size_t max_iterations = 200;
-  double function_tolerance = 1e-12;
+  std::size_t max_iterations = 2000;
+  double function_tolerance = 1e-9;
   //! true: every loop is one period in steady state (file comment); false: every record starts
   //! from the demagnetised state at H = 0 (e.g. a first-magnetisation record).
   bool periodic = true;

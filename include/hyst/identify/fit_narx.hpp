@@ -53,7 +53,7 @@ struct NarxFitOptions {
   std::uint64_t seed = 1;                    //!< initial network weights
   std::size_t max_iterations = 100;          //!< one-step LM iterations (>= 1)
   //! LM iterations on the simulation (free-run) error after the one-step stage; 0: none.
-  std::size_t simulation_iterations = 20;
+  std::size_t simulation_iterations = 100;
   std::size_t patience = 15;             //!< early stopping (>= 1)
   double early_stopping_fraction = 0.2;  //!< of the fit part, [0, 0.9]; 0: none
   double regularization = 1e-6;          //!< lambda >= 0 (normalised units)

@@ -33,7 +33,9 @@ namespace hyst {
 
 //! Why an iterative fit stopped.
 enum class Termination {
-  converged,       //!< the optimality conditions hold within the tolerance
+  converged,       //!< the optimality conditions hold within the tolerance; for the Ceres-based
+                   //!< fits also: the cost fell by less than 0.1 % over the last 50 iterations
+                   //!< (a stagnating Levenberg-Marquardt run on a kinked cost)
   max_iterations,  //!< the iteration limit was reached first; the result is feasible but not
                    //!< optimal
   no_progress,     //!< the method could not improve further (rounding, degenerate data)

@@ -6,8 +6,11 @@
 // physical parameters so that q is of order 1) for any scalar type T:
 //   template <class T> bool operator()(const T* q, T* residuals) const;
 //   std::size_t residuals() const;
+// With `global_evaluations` > 0, a global search of the bounded box (global_stage.hpp) first runs
+// from the start of lowest cost, and its best point is one more start (index starts.size()).
 // Every start runs `screening_iterations`; the best one continues up to `max_iterations`.
 // Parameters listed in `fixed` are held at their start value.
+// Convergence: the tests of convergence.hpp, the same for every Ceres-based fitter.
 
 #include <array>
 #include <cmath>
@@ -23,16 +26,20 @@
 #include "hyst/core/error.hpp"
 #include "hyst/identify/fit_report.hpp"
 
+#include "convergence.hpp"
+#include "global_stage.hpp"
+
 namespace hyst::detail {
 
 template <std::size_t N>
 struct MultistartOptions {
   std::array<double, N> lower{};
   std::array<double, N> upper{};
-  std::vector<int> fixed;  // indices held at their start value
+  std::vector<int> fixed;              // indices held at their start value
+  std::size_t global_evaluations = 0;  // cost evaluations of the global stage; 0: none
   std::size_t screening_iterations = 10;
   std::size_t max_iterations = 100;
-  double function_tolerance = 1e-12;
+  double function_tolerance = kFunctionTolerance;
 };
 
 template <std::size_t N>
@@ -109,19 +116,12 @@ ceres::Solver::Summary solve_bounded(const Functor& functor, std::array<double, 
   if (!options.fixed.empty()) {
     problem.SetManifold(q.data(), new ceres::SubsetManifold(static_cast<int>(N), options.fixed));
   }
-  ceres::Solver::Options solver;
-  solver.minimizer_type = ceres::TRUST_REGION;
-  solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  solver.linear_solver_type = ceres::DENSE_QR;
-  solver.max_num_iterations = static_cast<int>(iterations);
-  solver.function_tolerance = options.function_tolerance;
-  solver.gradient_tolerance = 1e-14;
-  solver.parameter_tolerance = 1e-12;
-  solver.logging_type = ceres::SILENT;
-  solver.minimizer_progress_to_stdout = false;
-  solver.num_threads = 1;
+  auto solver = levenberg_marquardt_options(iterations, options.function_tolerance);
+  StagnationStop stagnation;
+  solver.callbacks.push_back(&stagnation);
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
+  if (stagnation.stopped()) summary.message = stagnation.message();
   return summary;
 }
 
@@ -145,12 +145,32 @@ MultistartResult<N> multistart_fit(const Functor& functor,
       }
     }
   }
+  std::vector<std::array<double, N>> all_starts = starts;
+  std::vector<double> start_costs;
+  for (const auto& start : starts)
+    start_costs.push_back(least_squares_cost(functor, start));
+  if (options.global_evaluations > 0) {
+    std::size_t lowest = 0;
+    for (std::size_t s = 1; s < starts.size(); ++s) {
+      if (start_costs[s] < start_costs[lowest]) lowest = s;
+    }
+    std::array<double, N> q = starts[lowest];
+    const auto cost_of = [&functor](const std::array<double, N>& point) {
+      return least_squares_cost(functor, point);
+    };
+    const auto global = global_search(cost_of, q, start_costs[lowest], options.lower, options.upper,
+                                      options.fixed, options.global_evaluations);
+    if (global.improved) {
+      all_starts.push_back(q);
+      start_costs.push_back(global.cost);
+    }
+  }
   MultistartResult<N> result;
   double best_cost = std::numeric_limits<double>::infinity();
   ceres::Solver::Summary best_summary;
-  for (std::size_t s = 0; s < starts.size(); ++s) {
-    std::array<double, N> q = starts[s];
-    const double start_cost = least_squares_cost(functor, q);
+  for (std::size_t s = 0; s < all_starts.size(); ++s) {
+    std::array<double, N> q = all_starts[s];
+    const double start_cost = start_costs[s];
     if (!std::isfinite(start_cost)) continue;
     const auto summary = solve_bounded(functor, q, options, options.screening_iterations);
     result.iterations +=

@@ -1,0 +1,78 @@
+// The global stage of the multistart engine (src/identify/detail/global_stage.hpp) on a cost with
+// many valleys: cost(q) = ((q - 4)^2 + 9 cos^2(2 q)) / 2 on [-5, 10]. Its valleys lie near the
+// zeros of cos(2 q), q = pi/4 + k pi/2, and the deepest is the one closest to 4 (3 pi/4 + pi/2 =
+// 3.93). Levenberg-Marquardt from q = 0.7 ends in the valley near pi/4; the global stage finds the
+// deepest one. The reference minimum comes from a second algorithm: a grid search with 1e-5 steps.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "detail/multistart_fit.hpp"
+
+namespace {
+
+struct ManyValleys {
+  template <class T>
+  bool operator()(const T* q, T* residuals) const {
+    using std::cos;
+    residuals[0] = q[0] - T(4.0);
+    residuals[1] = T(3.0) * cos(T(2.0) * q[0]);
+    return true;
+  }
+  std::size_t residuals() const { return 2; }
+};
+
+double cost(double q) {
+  return 0.5 * ((q - 4.0) * (q - 4.0) + 9.0 * std::cos(2.0 * q) * std::cos(2.0 * q));
+}
+
+double grid_minimum() {
+  double best_q = -5.0;
+  for (double q = -5.0; q <= 10.0; q += 1e-5) {
+    if (cost(q) < cost(best_q)) best_q = q;
+  }
+  return best_q;
+}
+
+hyst::detail::MultistartOptions<1> options(std::size_t global_evaluations) {
+  hyst::detail::MultistartOptions<1> o;
+  o.lower = {-5.0};
+  o.upper = {10.0};
+  o.global_evaluations = global_evaluations;
+  return o;
+}
+
+TEST(GlobalStage, LocalStartEndsInTheNearestValley) {
+  const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, options(0), "test");
+  EXPECT_NEAR(result.q[0], std::numbers::pi / 4.0, 0.1);
+  EXPECT_GT(result.final_cost, cost(grid_minimum()) + 1.0);
+}
+
+TEST(GlobalStage, FindsTheDeepestValley) {
+  const double reference = grid_minimum();
+  ASSERT_NEAR(reference, 3.93, 0.05);
+  const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, options(300), "test");
+  EXPECT_EQ(result.best_start, 1u);  // the point of the global stage
+  EXPECT_NEAR(result.q[0], reference, 1e-4);
+  EXPECT_NEAR(result.final_cost, cost(reference), 1e-8);
+}
+
+TEST(GlobalStage, RepeatsBitForBit) {
+  const auto first = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, options(50), "test");
+  const auto second = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, options(50), "test");
+  EXPECT_EQ(first.q[0], second.q[0]);
+  EXPECT_EQ(first.final_cost, second.final_cost);
+}
+
+TEST(GlobalStage, KeepsFixedParametersAtTheirStart) {
+  hyst::detail::MultistartOptions<1> o = options(100);
+  o.fixed = {0};
+  const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, o, "test");
+  EXPECT_EQ(result.q[0], 0.7);
+}
+
+}  // namespace
