@@ -2,9 +2,9 @@
 // and an output record. Each model with a fitter is fitted with its default options on the first
 // 75 % of one record and ranked by its free-run error on the last 25 %; the ranking table, its
 // CSV, the loop and error plots and a self-contained HTML report go to model_comparison/<set>/.
-// Where a data set has several records (the five piezo amplitudes), the models are first ranked
-// on records they were not fitted on (hyst compare --fit-records/--validate-records): its tables
-// go to model_comparison/piezo_amplitudes/.
+// Where a data set has several records (the five piezo amplitudes, the nested B(H) loops, the
+// FORCs), the models are first ranked on records they were not fitted on (hyst compare
+// --fit-records/--validate-records): those tables go to model_comparison/<set>/ too.
 
 #include <filesystem>
 #include <string>
@@ -146,6 +146,24 @@ std::string compare_one(const DataSet& set, const fs::path& folder) {
                      set.input.size(), left_out, markdown, figures);
 }
 
+// One ranking on separate records, written to `folder` (ranking.md, ranking.csv); returns its
+// part of results.md: a heading, what was compared, the command that does the same, the table.
+std::string cross_record_ranking(const std::string& heading, const std::string& what,
+                                 const std::vector<hyst::NamedRecord>& fit,
+                                 const std::vector<hyst::NamedRecord>& held_out,
+                                 const hyst::CrossRecordOptions& options, const fs::path& folder) {
+  fmt::print(stderr, "model comparison: {} (ranked on separate records)\n",
+             folder.filename().string());
+  const auto comparison = hyst::compare_across_records(fit, held_out, options);
+  fs::create_directories(folder);
+  const auto markdown = hyst::cross_record_markdown(comparison);
+  hyst::io::write_file_atomically(folder / "ranking.md", markdown);
+  hyst::io::write_file_atomically(folder / "ranking.csv", hyst::cross_record_csv(comparison));
+  return fmt::format("### {}: {}\n\n{} Tables: `{}/ranking.md`, `{}/ranking.csv`.\n\n{}\n",
+                     folder.filename().string(), heading, what, folder.filename().string(),
+                     folder.filename().string(), markdown);
+}
+
 // The five piezo amplitudes: every model fitted on 1.5 kV and ranked on the other four, each
 // predicted from its own periodic state and zeroed at its first sample like the measurement (the
 // rule of the PI section and of docs/results.md).
@@ -161,21 +179,76 @@ std::string piezo_amplitudes(const fs::path& data_dir, const fs::path& folder) {
     held_out.push_back(record(suffix));
   hyst::CrossRecordOptions options;
   options.validation = {hyst::ValidationStart::periodic, hyst::ValidationAlignment::first_sample};
-  const auto comparison = hyst::compare_across_records({record("15kv")}, held_out, options);
-  fs::create_directories(folder);
-  const auto markdown = hyst::cross_record_markdown(comparison);
-  hyst::io::write_file_atomically(folder / "ranking.md", markdown);
-  hyst::io::write_file_atomically(folder / "ranking.csv", hyst::cross_record_csv(comparison));
-  return fmt::format(
-      "### piezo_amplitudes: ranked on records the models did not see\n\n"
+  return cross_record_ranking(
+      "ranked on records the models did not see",
       "piezo_pzt_aixacct_butterfly/MeasurementData.mat, one period per amplitude: every model "
       "with its default options fitted on 1.5 kV, ranked on 0.8, 1.0, 1.1 and 1.9 kV. The "
       "same as `hyst compare --data MeasurementData.mat --fit-records "
       "Vplus_15kv:Displacement_15kv --validate-records "
       "Vplus_08kv:Displacement_08kv,Vplus_1kv:Displacement_1kv,Vplus_11kv:Displacement_11kv,"
       "Vplus_19kv:Displacement_19kv --validation-start periodic --validation-align "
-      "first-sample`. Tables: `{0}/ranking.md`, `{0}/ranking.csv`.\n\n{1}\n",
-      folder.filename().string(), markdown);
+      "first-sample`.",
+      {record("15kv")}, held_out, options, folder);
+}
+
+// The nested B(H) loops of one material: every model fitted on the largest loop and ranked on
+// the smaller ones, each predicted from its own periodic state (one closed loop, cycled).
+std::string nested_bh_loops(const fs::path& data_dir, const std::string& material,
+                            const fs::path& folder) {
+  const auto data = data_dir / "bh_loops_jamodel";
+  const auto h = hyst::io::read_mat_columns(data / ("H_" + material + ".mat"), "HmeasT");
+  const auto b = hyst::io::read_mat_columns(data / ("B_" + material + ".mat"), "BmeasT");
+  std::vector<hyst::NamedRecord> loops;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    loops.push_back({fmt::format("loop{}", i + 1), h.at(i), b.at(i)});
+  const hyst::NamedRecord largest = loops.back();
+  loops.pop_back();
+  hyst::CrossRecordOptions options;
+  options.validation = {hyst::ValidationStart::periodic, hyst::ValidationAlignment::none};
+  return cross_record_ranking(
+      "the largest loop predicts the nested ones",
+      fmt::format(
+          "bh_loops_jamodel/{{H,B}}_{0}.mat, H [A/m] -> B [T], one closed loop per column "
+          "(loop1 the smallest): every model with its default options fitted on {1}, ranked "
+          "on the {2} nested loops, each from its own periodic state. Written by `make demo` "
+          "(hyst::compare_across_records with each column as a record: the command line takes "
+          "whole variables of a .mat file, not the columns of one matrix).",
+          material, largest.name, loops.size()),
+      {largest}, loops, options, folder);
+}
+
+// The FORCs of the AGM run split in two: every model fitted on the even-numbered curves and
+// ranked on the odd-numbered ones. Each curve is kept with the drift-calibration point measured
+// just before it, near saturation, so a record carries the history a FORC needs (saturate, go
+// down to the reversal field, sweep up) and the model state is saturated at each curve's start.
+std::string every_other_forc(const fs::path& data_dir, const fs::path& folder) {
+  const auto file = hyst::io::read_micromag_forc(data_dir / "pmagpy_forc_micromag_agm" /
+                                                 "conventional_example.forc");
+  hyst::NamedRecord even{"even FORCs", {}, {}};
+  hyst::NamedRecord odd{"odd FORCs", {}, {}};
+  for (std::size_t i = 0; i < file.curves.size(); ++i) {
+    const auto& curve = file.curves[i];
+    auto& record = i % 2 == 0 ? even : odd;
+    record.input.push_back(curve.calibration_field);
+    record.output.push_back(curve.calibration_moment);
+    record.input.insert(record.input.end(), curve.field.begin(), curve.field.end());
+    record.output.insert(record.output.end(), curve.moment.begin(), curve.moment.end());
+  }
+  hyst::CrossRecordOptions options;  // start rest: the calibration point saturates the state
+  for (const auto& entry : hyst::ModelRegistry::builtin().entries()) {
+    if (entry.can_fit() && entry.name != kSlowOnLongRecords) options.models.push_back(entry.name);
+  }
+  return cross_record_ranking(
+      "every other FORC",
+      fmt::format(
+          "pmagpy_forc_micromag_agm/conventional_example.forc, field [T] -> moment [A m^2]: "
+          "the {} curves, each after the drift-calibration point measured before it near "
+          "saturation; every model with its default options fitted on the even-numbered "
+          "curves joined ({} samples), ranked on the odd-numbered ones joined ({} samples), "
+          "predicted from rest (each curve's calibration point saturates the state). `{}` is "
+          "left out (its fit takes minutes on thousands of samples).",
+          file.curves.size(), even.input.size(), odd.input.size(), kSlowOnLongRecords),
+      {even}, {odd}, options, folder);
 }
 
 }  // namespace
@@ -187,8 +260,11 @@ std::string model_comparison_section(const fs::path& data_dir, const fs::path& f
       "held-out last 25 % of the record. Not compared: `magnet_ferrite_bwaveform_loss` (B(t) "
       "only, no H: no input-output pair to fit). A time split measures extrapolation; where a "
       "data set has several records, the first table ranks on separate records instead.\n\n";
-  fmt::print(stderr, "model comparison: piezo amplitudes (fit on 1.5 kV, ranked on the others)\n");
-  markdown += piezo_amplitudes(data_dir, folder / "model_comparison" / "piezo_amplitudes");
+  const auto comparisons = folder / "model_comparison";
+  markdown += piezo_amplitudes(data_dir, comparisons / "piezo_amplitudes");
+  markdown += nested_bh_loops(data_dir, "MnZn_ferrite", comparisons / "bh_MnZn_ferrite_nested");
+  markdown += nested_bh_loops(data_dir, "M130_27s", comparisons / "bh_M130_27s_nested");
+  markdown += every_other_forc(data_dir, comparisons / "forc_every_other");
   for (const auto& set : read_data_sets(data_dir)) {
     fmt::print(stderr, "model comparison: {} ({} samples)\n", set.name, set.input.size());
     markdown += compare_one(set, folder / "model_comparison" / set.name);
