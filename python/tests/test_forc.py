@@ -31,6 +31,8 @@ def test_reads_the_series_0015_agm_file(agm_file):
     assert len(first) == 1 and first.field[0] == 0.1182822 and first.first_line == 37
     assert len(last.field) == 85 and last.field[0] == -0.218002
     assert first.calibration_moment == 7.842043e-07 and forc.final_calibration is None
+    assert isinstance(first, io.MicromagForcCurve) and first.more_columns == []
+    assert abs(first.calibration_field - 0.237) < 1e-3
     assert "120 curves" in repr(forc) and "H_r = " in repr(first)
     corrected = io.correct_drift(forc, "multiplicative")
     assert corrected.curves[-1].calibration_moment == first.calibration_moment
