@@ -85,7 +85,7 @@ void bind_forc(py::module_& module) {
       "Identifies the Preisach model (a tabulated Everett function, model 'tabulated_preisach') "
       "from first-order reversal curves; returns (Model, FitReport). `curves` is a "
       "hyst.io.MicromagForcFile (drift=\"multiplicative\" or \"additive\" corrects the moments "
-      "with its calibration points; the table spans the lowest field to HSat) or a sequence of "
+      "with its calibration points; the table spans the fields of its curves) or a sequence of "
       "(input, output) pairs, each starting at its reversal input after saturation. "
       "hold_out_every=N holds out curves N, 2N, ... (held_out=[indices] for arrays) and "
       "report.validation measures them. Keyword options: intervals (24), lower, upper, "

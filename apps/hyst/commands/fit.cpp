@@ -17,6 +17,7 @@
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/registry/forc_fit.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -353,11 +354,15 @@ void add_fit_command(CLI::App& app) {
   command->add_option("--band", options->band,
                       "Hysteresis band for reversals and cycles [input units] (default: 2 % of "
                       "the input range)");
+  std::string forc_options;
+  for (const auto& option : forc_fit_options())
+    forc_options += fmt::format("\n  {}: {}", option.name, option.description);
   auto* forc = command->add_option(
       "--forc", options->forc,
-      "A MicroMag FORC file (Series 0015 or 0016): identify the Preisach model (tabulated "
-      "Everett function) from its first-order reversal curves; options: 'hyst models "
-      "tabulated_preisach'");
+      "A MicroMag FORC file (Series 0015 or 0016): identify the Preisach model (model "
+      "'tabulated_preisach', a tabulated Everett function) from its first-order reversal "
+      "curves. Fit options (--option key=value):" +
+          forc_options);
   command
       ->add_option("--drift", options->drift,
                    "With --forc: correct the moments for the drift of the calibration points: "
