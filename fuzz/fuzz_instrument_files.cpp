@@ -1,7 +1,7 @@
 // Fuzz target: the readers of instrument text exports - aixACCT, MicroMag hysteresis loop and
-// FORC files, MagIC tables with their hysteresis loops. The first byte chooses the reader, the
-// rest is the file. What a reader accepts must hold together: columns of equal length, one value
-// per row and column, block starts inside the data.
+// FORC files (Series 0015 and 0016 layouts), MagIC tables with their hysteresis loops. The first
+// byte chooses the reader, the rest is the file. What a reader accepts must hold together: columns
+// of equal length, one value per row and column, block starts inside the data.
 
 #include <cstddef>
 #include <cstdint>
@@ -30,9 +30,19 @@ void check_loop_file(std::string_view text) {
 
 void check_forc_file(std::string_view text) {
   const auto file = hyst::io::parse_micromag_forc(text, "fuzz.forc");
+  if (file.columns.size() < 2 || file.units.size() != file.columns.size()) std::abort();
   for (const auto& curve : file.curves) {
     if (curve.field.size() != curve.moment.size() || curve.field.empty()) std::abort();
+    if (curve.more_columns.size() + 2 != file.columns.size()) std::abort();
+    for (const auto& column : curve.more_columns) {
+      if (column.size() != curve.field.size()) std::abort();
+    }
   }
+  // Drift correction of whatever the reader accepts: an error (a zero calibration moment) or
+  // moments of the same shape.
+  const auto corrected =
+      hyst::io::correct_drift(file, hyst::io::ForcDriftCorrection::multiplicative);
+  if (corrected.curves.size() != file.curves.size()) std::abort();
 }
 
 void check_magic_table(std::string_view text) {

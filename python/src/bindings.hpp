@@ -53,5 +53,6 @@ void bind_actuator(py::module_& module);
 void bind_data(py::module_& module);
 void bind_compare(py::module_& module);
 void bind_magnetometer_files(py::module_& module);
+void bind_forc(py::module_& module);
 
 }  // namespace hyst::python

@@ -45,6 +45,8 @@ def test_micromag_loop_file(data_dir):
     table = loop.to_dict()
     assert list(table) == loop.columns and np.array_equal(table["Raw Field"], loop.field)
     assert "1602 points" in repr(loop) and loop.source.endswith("CP4Q.hyst")
+    # No units line in Series 0015: the units follow "Hybrid SI"; no initial curve measured.
+    assert loop.units == ["T", "A m\u00b2", "T", "A m\u00b2"] and loop.initial_curve_points == 0
 
 
 def test_micromag_loop_through_hyst_data(data_dir):

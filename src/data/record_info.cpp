@@ -1,6 +1,7 @@
 #include "hyst/data/record_info.hpp"
 
 #include <algorithm>
+#include <span>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -8,7 +9,10 @@
 #include "hyst/core/error.hpp"
 #include "hyst/data/cycles.hpp"
 #include "hyst/data/reversal_points.hpp"
+#include "hyst/io/atomic_file.hpp"
 #include "hyst/io/data_file.hpp"
+#include "hyst/io/micromag_forc.hpp"
+#include "hyst/io/micromag_loop.hpp"
 
 namespace hyst::data {
 namespace {
@@ -21,10 +25,11 @@ constexpr std::string_view kHighlights[] = {"SampleName", "Waveform", "Hysteresi
 struct ReadTable {
   TableInfo info;
   std::vector<std::vector<double>> values;  //!< values[j] belongs to info.columns[j]
+  std::size_t loop_start = 0;  //!< first row of the loop cycles (after an initial curve)
 };
 
 ReadTable read_table(const io::AixacctTable& table, std::string title) {
-  ReadTable read{{std::move(title), {}, {}, table.rows(), {}}, {}};
+  ReadTable read{{std::move(title), {}, {}, table.rows(), {}}, {}, 0};
   for (const auto key : kHighlights) {
     if (const auto value = table.metadata_text(key)) read.info.metadata.emplace_back(key, *value);
   }
@@ -34,6 +39,68 @@ ReadTable read_table(const io::AixacctTable& table, std::string title) {
     read.values.push_back(column.values);
   }
   return read;
+}
+
+//! "Series 0016.002" of "MicroMag 2900/3900 Data File (Series 0016.002)".
+std::string series_of(std::string_view format) {
+  const auto open = format.find('(');
+  const auto close = format.rfind(')');
+  if (open == std::string_view::npos || close == std::string_view::npos || close < open) {
+    return std::string(format);
+  }
+  return std::string(format.substr(open + 1, close - open - 1));
+}
+
+//! A MicroMag loop file's table: units per column, the segments and the initial curve.
+ReadTable read_loop_table(const io::MicromagLoopFile& file) {
+  ReadTable read{{"table", {}, {}, file.points(), {}}, file.values, file.initial_curve_points};
+  if (const auto system = file.header_text("Units of measure")) {
+    read.info.metadata.emplace_back("units of measure", *system);
+  }
+  read.info.metadata.emplace_back("segments", fmt::format("{}", file.segment_starts.size()));
+  if (file.initial_curve_points > 0) {
+    read.info.metadata.emplace_back(
+        "initial curve",
+        fmt::format("rows 0..{} (not part of the loop cycles)", file.initial_curve_points - 1));
+  }
+  for (std::size_t j = 0; j < file.columns.size(); ++j) {
+    read.info.columns.push_back(
+        {file.columns[j], file.units[j], file.values[j].size(), {}, 0.0, 0.0, {}, {}});
+  }
+  return read;
+}
+
+ForcInfo forc_info(const io::MicromagForcFile& file) {
+  ForcInfo info;
+  info.layout = file.layout == io::MicromagForcLayout::series_0015 ? "Series 0015" : "Series 0016";
+  info.curves = file.curves.size();
+  info.points = file.points();
+  info.calibration_points = file.calibration_points();
+  info.field_unit = file.units.size() > 0 ? file.units[0] : "";
+  info.moment_unit = file.units.size() > 1 ? file.units[1] : "";
+  info.calibration_field = file.header_number("HCal");
+  const auto& first = file.curves.front();
+  info.fewest_points = info.most_points = first.field.size();
+  info.field_min = info.field_max = first.field.front();
+  info.reversal_min = info.reversal_max = first.field.front();
+  info.calibration_field_min = info.calibration_field_max = first.calibration_field;
+  for (const auto& curve : file.curves) {
+    info.fewest_points = std::min(info.fewest_points, curve.field.size());
+    info.most_points = std::max(info.most_points, curve.field.size());
+    const auto [low, high] = std::minmax_element(curve.field.begin(), curve.field.end());
+    info.field_min = std::min(info.field_min, *low);
+    info.field_max = std::max(info.field_max, *high);
+    info.reversal_min = std::min(info.reversal_min, curve.field.front());
+    info.reversal_max = std::max(info.reversal_max, curve.field.front());
+    info.calibration_field_min = std::min(info.calibration_field_min, curve.calibration_field);
+    info.calibration_field_max = std::max(info.calibration_field_max, curve.calibration_field);
+  }
+  const double last = file.final_calibration ? file.final_calibration->second
+                                             : file.curves.back().calibration_moment;
+  if (first.calibration_moment != 0.0) {
+    info.calibration_drift_percent = 100.0 * (last / first.calibration_moment - 1.0);
+  }
+  return info;
 }
 
 //! Every table of the file: aixACCT summary and measurements, the one CSV table, or the MAT
@@ -53,7 +120,7 @@ std::vector<ReadTable> read_tables(const std::filesystem::path& path,
     return tables;
   }
   const io::DataFile source(path, options.table);
-  ReadTable table{{source.is_mat() ? "variables" : "table", {}, {}, 0, {}}, {}};
+  ReadTable table{{source.is_mat() ? "variables" : "table", {}, {}, 0, {}}, {}, 0};
   for (const auto& name : source.columns()) {
     ColumnInfo column{name, {}, 0, {}, 0.0, 0.0, {}, {}};
     std::vector<double> values;
@@ -80,7 +147,7 @@ std::vector<ReadTable> read_tables(const std::filesystem::path& path,
   return tables;
 }
 
-void summarise(ColumnInfo& column, const std::vector<double>& values, double band_fraction) {
+void summarise(ColumnInfo& column, std::span<const double> values, double band_fraction) {
   if (values.empty()) return;
   const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
   column.min = *lowest;
@@ -108,11 +175,27 @@ std::vector<LoopMetrics> loop_figures(const ReadTable& table, const RecordInfoOp
   if (!options.loop) return {};
   const auto* input = find_values(table, options.loop->first);
   const auto* output = find_values(table, options.loop->second);
-  if (!input || !output || input->size() != output->size() || input->size() < 3) return {};
+  if (!input || !output || input->size() != output->size()) return {};
+  // The cycles start after an initial (virgin) curve: it starts from the demagnetised state and
+  // would make the first cycle a mix of it and the loop.
+  const std::size_t start = std::min(table.loop_start, input->size());
+  const std::span<const double> loop_input(input->data() + start, input->size() - start);
+  const std::span<const double> loop_output(output->data() + start, output->size() - start);
+  if (loop_input.size() < 3) return {};
   ColumnInfo figures;
-  summarise(figures, *input, options.band_fraction);
+  summarise(figures, loop_input, options.band_fraction);
   if (!figures.cycles) return {};
-  return cycle_metrics(*input, *output, options.band_fraction * (figures.max - figures.min));
+  auto metrics =
+      cycle_metrics(loop_input, loop_output, options.band_fraction * (figures.max - figures.min));
+  for (auto& m : metrics) {  // rows of the file
+    m.first += start;
+    m.last += start;
+    for (auto& crossing : m.coercive)
+      crossing.index += start;
+    for (auto& crossing : m.remanent)
+      crossing.index += start;
+  }
+  return metrics;
 }
 
 nlohmann::json crossings_json(const std::vector<LevelCrossing>& crossings) {
@@ -136,8 +219,38 @@ RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOption
     throw Error(fmt::format("band fraction {} must be > 0 and < 1", options.band_fraction),
                 "band_fraction");
   }
-  RecordInfo info{path.string(), {}, options.band_fraction, {}};
-  for (auto& table : read_tables(path, options, info.format)) {
+  RecordInfo info{path.string(), {}, options.band_fraction, {}, {}};
+  std::vector<ReadTable> tables;
+  if (!io::has_mat_extension(path)) {
+    const auto text = io::read_file(path);
+    if (io::looks_like_micromag_forc(text)) {
+      if (options.table) {
+        throw Error(fmt::format(
+            "{}: --table (Python: table=) chooses a table of an aixACCT export; this file is a "
+            "MicroMag FORC file",
+            path.string()));
+      }
+      const auto file = io::parse_micromag_forc(text, path.string());
+      info.format = fmt::format("MicroMag FORC file, {} curves ({})", file.curves.size(),
+                                series_of(file.format));
+      info.forc = forc_info(file);
+      return info;
+    }
+    if (io::looks_like_micromag_loop(text)) {
+      if (options.table) {
+        throw Error(fmt::format(
+            "{}: --table (Python: table=) chooses a table of an aixACCT export; this file is a "
+            "MicroMag loop file",
+            path.string()));
+      }
+      const auto file = io::parse_micromag_loop(text, path.string());
+      info.format = fmt::format("MicroMag hysteresis loop file, {} columns ({})",
+                                file.columns.size(), series_of(file.format));
+      tables.push_back(read_loop_table(file));
+    }
+  }
+  if (tables.empty()) tables = read_tables(path, options, info.format);
+  for (auto& table : tables) {
     for (std::size_t j = 0; j < table.info.columns.size(); ++j)
       summarise(table.info.columns[j], table.values[j], options.band_fraction);
     table.info.loops = loop_figures(table, options);
@@ -178,6 +291,26 @@ nlohmann::json record_info_json(const RecordInfo& info) {
                                 {"remanent_outputs", crossings_json(m.remanent)}});
     }
     out["tables"].push_back(std::move(entry));
+  }
+  if (info.forc) {
+    const auto& f = *info.forc;
+    out["forc"] = {{"layout", f.layout},
+                   {"curves", f.curves},
+                   {"points", f.points},
+                   {"calibration_points", f.calibration_points},
+                   {"fewest_points", f.fewest_points},
+                   {"most_points", f.most_points},
+                   {"field_min", f.field_min},
+                   {"field_max", f.field_max},
+                   {"reversal_min", f.reversal_min},
+                   {"reversal_max", f.reversal_max},
+                   {"calibration_field",
+                    f.calibration_field ? nlohmann::json(*f.calibration_field) : nlohmann::json()},
+                   {"calibration_field_min", f.calibration_field_min},
+                   {"calibration_field_max", f.calibration_field_max},
+                   {"calibration_drift_percent", f.calibration_drift_percent},
+                   {"field_unit", f.field_unit},
+                   {"moment_unit", f.moment_unit}};
   }
   return out;
 }

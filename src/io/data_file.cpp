@@ -9,20 +9,17 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/mat_file.hpp"
+#include "hyst/io/micromag_forc.hpp"
 #include "hyst/io/micromag_loop.hpp"
 #include "text_encoding.hpp"
 
 namespace hyst::io {
-namespace {
-
 bool has_mat_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension == ".mat";
 }
-
-}  // namespace
 
 std::optional<AixacctFile> read_if_aixacct(const std::filesystem::path& path) {
   if (has_mat_extension(path)) return std::nullopt;
@@ -51,6 +48,13 @@ DataFile::DataFile(std::filesystem::path path, std::optional<std::size_t> table)
       const auto& chosen = table ? aixacct_->measurement(*table) : tables.front();
       aixacct_table_ = static_cast<std::size_t>(&chosen - tables.data());
       table_ = chosen.to_table(path_.string());
+    } else if (looks_like_micromag_forc(text)) {
+      throw Error(fmt::format(
+          "{}: a MicroMag FORC file; its first-order reversal curves, each measured after "
+          "saturation, are not one input/output record: identify the Preisach model with 'hyst "
+          "fit preisach --forc {}' (Python: hyst.fit_preisach_forcs), and see its curves with "
+          "'hyst data info {}'",
+          path_.string(), path_.string(), path_.string()));
     } else if (looks_like_micromag_loop(text)) {
       micromag_loop_ = true;
       table_ = parse_micromag_loop(text, path_.string()).to_table();

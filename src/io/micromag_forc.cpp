@@ -2,14 +2,18 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <sstream>
+#include <cstddef>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/limits.hpp"
+#include "line_reader.hpp"
+#include "micromag_columns.hpp"
 #include "micromag_lines.hpp"
+#include "micromag_sections.hpp"
 #include "text_encoding.hpp"
 #include "text_fields.hpp"
 
@@ -21,9 +25,9 @@ using detail::parse_number;
 using detail::trim;
 
 struct Block {
-  std::vector<double> field;
-  std::vector<double> moment;
-  std::size_t first_line = 0;
+  std::vector<std::vector<double>> columns;  //!< columns[j][i]: column j of row i
+  std::vector<std::size_t> lines;            //!< 1-based line of each row
+  std::size_t size() const { return lines.size(); }
 };
 
 constexpr std::array<std::pair<ForcDriftCorrection, std::string_view>, 3> kDriftNames{{
@@ -31,6 +35,247 @@ constexpr std::array<std::pair<ForcDriftCorrection, std::string_view>, 3> kDrift
     {ForcDriftCorrection::multiplicative, "multiplicative"},
     {ForcDriftCorrection::additive, "additive"},
 }};
+
+//! Series 0015 ends its header with "NData = N"; Series 0016 writes "Number of data   N".
+bool has_ndata_line(detail::LineReader lines) {
+  std::string_view line;
+  while (lines.next(line)) {
+    const auto content = trim(line);
+    if (detail::is_comma_row(content)) return false;
+    if (content.starts_with("NData") && trim(content.substr(5)).starts_with('=')) return true;
+  }
+  return false;
+}
+
+class ForcParser {
+ public:
+  // A final line end ends the last line; it does not start an empty one (messages name the last
+  // line of the text).
+  ForcParser(std::string_view text, std::string_view source)
+      : lines_(text.ends_with('\n') ? text.substr(0, text.size() - 1) : text), source_(source) {
+    file_.source = std::string(source);
+  }
+
+  MicromagForcFile parse() {
+    std::string_view line;
+    if (!lines_.next(line) || !detail::is_micromag_format_line(line)) {
+      throw Error(
+          fmt::format("{}: not a MicroMag data file (the first line is '{}', expected "
+                      "'MicroMag 2900/3900 Data File (Series ...)')",
+                      location(source_, 1), trim(line)));
+    }
+    file_.format = std::string(trim(line));
+    if (lines_.next(line)) file_.title = utf8_from_latin1(trim(line));
+    if (file_.title.find("Hysteresis loop") != std::string::npos) {
+      throw Error(fmt::format(
+          "{}: a MicroMag hysteresis loop file, not a FORC file (read it with read_micromag_loop)",
+          location(source_, 2)));
+    }
+    std::string_view first_row;
+    if (has_ndata_line(lines_)) {
+      file_.layout = MicromagForcLayout::series_0015;
+      read_equals_header();
+      file_.columns = {"Field", "Moment"};
+    } else {
+      file_.layout = MicromagForcLayout::series_0016;
+      detail::MicromagSectionReader sections(lines_, source_);
+      static_cast<void>(sections.read_head(file_.header));
+      first_row = sections.first_row();
+      const auto count = detail::split_fields(first_row, ',').size();
+      if (count < 2) {
+        throw Error(fmt::format("{}: a data row needs at least field and moment, got '{}'",
+                                location(source_, lines_.number()), first_row));
+      }
+      file_.columns = detail::column_names(sections.titles(), count);
+      file_.units = detail::column_units(sections.titles(), count);
+    }
+    file_.units.resize(file_.columns.size());
+    units_from_header();
+    const auto blocks = read_blocks(first_row);
+    make_curves(blocks);
+    check_counts(blocks);
+    return std::move(file_);
+  }
+
+ private:
+  // Series 0015: "key = value" and "key : value" up to and including the NData line.
+  void read_equals_header() {
+    std::string_view line;
+    while (lines_.next(line)) {
+      const auto content = trim(line);
+      const auto split = content.find_first_of("=:");
+      if (split == std::string_view::npos) continue;
+      const auto key = trim(content.substr(0, split));
+      const auto value = trim(content.substr(split + 1));
+      if (key.empty()) continue;
+      file_.header.emplace_back(utf8_from_latin1(key), utf8_from_latin1(value));
+      if (key == "NData") return;
+    }
+  }
+
+  // Field and moment units from "Units of measure" where no units line gave them.
+  void units_from_header() {
+    const auto system = file_.header_text("Units of measure").value_or("");
+    const bool si = system.find("SI") != std::string::npos;
+    const bool cgs =
+        system.find("gs") != std::string::npos || system.find("GS") != std::string::npos;
+    if (!si && !cgs) return;
+    if (file_.units[0].empty()) file_.units[0] = si ? "T" : "Oe";
+    if (file_.units[1].empty()) file_.units[1] = si ? "A m²" : "emu";
+  }
+
+  // Data blocks separated by blank lines, up to the end marker; `pending` is a row read ahead.
+  std::vector<Block> read_blocks(std::string_view pending) {
+    std::vector<Block> blocks;
+    Block current;
+    std::size_t points = 0;
+    const auto close_block = [&] {
+      if (current.size() == 0) return;
+      blocks.push_back(std::move(current));
+      current = Block{};
+      if (blocks.size() > 2 * limits::kMaxForcCurves + 1) {
+        throw Error(fmt::format("{}: more than {} FORCs; the limit is {} curves per file",
+                                location(source_, lines_.number()), limits::kMaxForcCurves,
+                                limits::kMaxForcCurves));
+      }
+    };
+    std::string_view line;
+    bool have_line = !pending.empty();
+    if (have_line) line = pending;
+    while (have_line || lines_.next(line)) {
+      have_line = false;
+      const auto content = trim(line);
+      if (content.empty()) {
+        close_block();
+        continue;
+      }
+      if (detail::is_micromag_end_marker(content)) {
+        close_block();
+        return blocks;
+      }
+      if (++points > limits::kMaxForcPoints) {
+        throw Error(fmt::format("{}: more than {} data points; the limit is {} per FORC file",
+                                location(source_, lines_.number()), limits::kMaxForcPoints,
+                                limits::kMaxForcPoints));
+      }
+      add_row(current, content);
+    }
+    throw Error(
+        fmt::format("{}: the file ends without the line 'MicroMag 2900/3900 Data File "
+                    "ends' (truncated?)",
+                    location(source_, lines_.number())));
+  }
+
+  void add_row(Block& block, std::string_view content) {
+    const auto count = file_.columns.size();
+    if (block.columns.empty()) block.columns.resize(count);
+    const auto fields = detail::split_fields(content, ',');
+    if (file_.layout == MicromagForcLayout::series_0015) {
+      const auto field = fields.size() == 2 ? parse_number(fields[0]) : std::nullopt;
+      const auto moment = fields.size() == 2 ? parse_number(fields[1]) : std::nullopt;
+      if (!field || !moment) {
+        throw Error(fmt::format("{}: '{}' is not 'field,moment' with two finite numbers",
+                                location(source_, lines_.number()), content));
+      }
+      block.columns[0].push_back(*field);
+      block.columns[1].push_back(*moment);
+    } else {
+      if (fields.size() != count) {
+        throw Error(
+            fmt::format("{}: '{}' has {} comma-separated fields; the data rows have {} ({})",
+                        location(source_, lines_.number()), content, fields.size(), count,
+                        fmt::join(file_.columns, ", ")));
+      }
+      for (std::size_t j = 0; j < count; ++j) {
+        const auto value = parse_number(fields[j]);
+        if (!value) {
+          throw Error(fmt::format("{}: column {} ('{}'): '{}' is not a finite number",
+                                  location(source_, lines_.number()), j + 1, file_.columns[j],
+                                  fields[j]));
+        }
+        block.columns[j].push_back(*value);
+      }
+    }
+    block.lines.push_back(lines_.number());
+  }
+
+  // Rows [begin, end) of a block as a curve after the calibration row `calibration`.
+  void add_curve(const Block& block, std::size_t calibration_row, const Block& calibration,
+                 std::size_t begin) {
+    MicromagForcFile::Curve curve;
+    curve.calibration_field = calibration.columns[0][calibration_row];
+    curve.calibration_moment = calibration.columns[1][calibration_row];
+    curve.field.assign(block.columns[0].begin() + static_cast<std::ptrdiff_t>(begin),
+                       block.columns[0].end());
+    curve.moment.assign(block.columns[1].begin() + static_cast<std::ptrdiff_t>(begin),
+                        block.columns[1].end());
+    for (std::size_t j = 2; j < block.columns.size(); ++j) {
+      curve.more_columns.emplace_back(block.columns[j].begin() + static_cast<std::ptrdiff_t>(begin),
+                                      block.columns[j].end());
+    }
+    curve.first_line = block.lines[begin];
+    file_.curves.push_back(std::move(curve));
+  }
+
+  // Blocks alternate: calibration point, curve, calibration point, curve, ...; a block whose
+  // field falls after its first row holds its own calibration point (that first row).
+  void make_curves(const std::vector<Block>& blocks) {
+    const Block* calibration = nullptr;
+    for (const auto& block : blocks) {
+      if (calibration) {
+        add_curve(block, 0, *calibration, 0);
+        calibration = nullptr;
+      } else if (block.size() == 1) {
+        calibration = &block;
+      } else if (block.columns[0][1] < block.columns[0][0]) {
+        add_curve(block, 0, block, 1);
+      } else {
+        throw Error(fmt::format(
+            "{}: a calibration block has {} points; expected 1 (blocks alternate: calibration "
+            "point, FORC; or a FORC block opens with its calibration point, whose field is above "
+            "the reversal field that follows)",
+            location(source_, block.lines.front()), block.size()));
+      }
+    }
+    if (calibration)
+      file_.final_calibration = {calibration->columns[0][0], calibration->columns[1][0]};
+    if (file_.curves.empty()) {
+      throw Error(fmt::format("{}: the file has no FORC (only calibration points)",
+                              location(source_, lines_.number())));
+    }
+  }
+
+  void check_counts(const std::vector<Block>& blocks) const {
+    std::size_t rows = 0;
+    for (const auto& block : blocks)
+      rows += block.size();
+    if (file_.layout == MicromagForcLayout::series_0015) {
+      if (const auto declared = file_.header_number("NData")) {
+        if (*declared != static_cast<double>(rows)) {
+          throw Error(fmt::format("{}: the header says NData = {} but the file has {} data points",
+                                  location(source_, lines_.number()), *declared, rows));
+        }
+      }
+      return;
+    }
+    // Whether "Number of data" counts the calibration points is not documented: either count is
+    // accepted.
+    if (const auto declared = file_.header_number("Number of data")) {
+      if (*declared != static_cast<double>(rows) &&
+          *declared != static_cast<double>(file_.points())) {
+        throw Error(fmt::format(
+            "{}: the header says 'Number of data {}' but the file has {} data rows ({} FORC "
+            "points and {} calibration points)",
+            location(source_, lines_.number()), *declared, rows, file_.points(),
+            file_.calibration_points()));
+      }
+    }
+  }
+
+  detail::LineReader lines_;
+  std::string_view source_;
+  MicromagForcFile file_;
+};
 
 }  // namespace
 
@@ -49,127 +294,21 @@ std::size_t MicromagForcFile::points() const {
   return count;
 }
 
+bool looks_like_micromag_forc(std::string_view text) {
+  detail::LineReader lines(text);
+  std::string_view first;
+  std::string_view second;
+  return lines.next(first) && detail::is_micromag_format_line(first) && lines.next(second) &&
+         second.find("First-order reversal") != std::string_view::npos;
+}
+
 MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view source_name) {
   check_text_encoding(text, source_name);
-  MicromagForcFile file;
-  file.source = std::string(source_name);
-  std::size_t line_number = 0;
-  std::size_t position = 0;
-  const auto next_line = [&](std::string_view& line) {
-    if (position >= text.size()) return false;
-    const auto end = text.find('\n', position);
-    line = text.substr(position,
-                       end == std::string_view::npos ? text.size() - position : end - position);
-    position = end == std::string_view::npos ? text.size() : end + 1;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    ++line_number;
-    return true;
-  };
-
-  std::string_view line;
-  if (!next_line(line) || !detail::is_micromag_format_line(line)) {
-    throw Error(
-        fmt::format("{}: not a MicroMag data file (the first line is '{}', expected "
-                    "'MicroMag 2900/3900 Data File (Series ...)')",
-                    location(source_name, 1), trim(line)));
-  }
-  file.format = std::string(trim(line));
-  if (next_line(line)) file.title = std::string(trim(line));
-
-  // Header: up to and including the NData line.
-  bool header_done = false;
-  while (!header_done && next_line(line)) {
-    const auto content = trim(line);
-    const auto split = content.find_first_of("=:");
-    if (split == std::string_view::npos) continue;
-    const auto key = trim(content.substr(0, split));
-    const auto value = trim(content.substr(split + 1));
-    if (key.empty()) continue;
-    file.header.emplace_back(std::string(key), std::string(value));
-    header_done = key == "NData";
-  }
-  if (!header_done) {
-    throw Error(
-        fmt::format("{}: no 'NData = ...' line: the header does not end, or this is not a "
-                    "FORC file",
-                    location(source_name, line_number)));
-  }
-
-  // Data blocks separated by blank lines, up to the end marker.
-  std::vector<Block> blocks;
-  Block current;
-  bool ended = false;
-  while (next_line(line)) {
-    const auto content = trim(line);
-    if (content.empty()) {
-      if (!current.field.empty()) blocks.push_back(std::move(current));
-      current = Block{};
-      continue;
-    }
-    if (detail::is_micromag_end_marker(content)) {
-      ended = true;
-      break;
-    }
-    const auto comma = content.find(',');
-    const auto field =
-        comma == std::string_view::npos ? std::nullopt : parse_number(content.substr(0, comma));
-    const auto moment =
-        comma == std::string_view::npos ? std::nullopt : parse_number(content.substr(comma + 1));
-    if (!field || !moment) {
-      throw Error(fmt::format("{}: '{}' is not 'field,moment' with two finite numbers",
-                              location(source_name, line_number), content));
-    }
-    if (current.field.empty()) current.first_line = line_number;
-    current.field.push_back(*field);
-    current.moment.push_back(*moment);
-  }
-  if (!current.field.empty()) blocks.push_back(std::move(current));
-  if (!ended) {
-    throw Error(
-        fmt::format("{}: the file ends without the line 'MicroMag 2900/3900 Data File "
-                    "ends' (truncated?)",
-                    location(source_name, line_number)));
-  }
-
-  // Blocks alternate: calibration point, curve, calibration point, curve, ...
-  std::size_t points = 0;
-  for (std::size_t b = 0; b < blocks.size(); b += 2) {
-    const Block& calibration = blocks[b];
-    points += calibration.field.size();
-    if (calibration.field.size() != 1) {
-      throw Error(
-          fmt::format("{}: a calibration block has {} points; expected 1 (blocks alternate: "
-                      "calibration point, FORC)",
-                      location(source_name, calibration.first_line), calibration.field.size()));
-    }
-    if (b + 1 == blocks.size()) {
-      file.final_calibration = {calibration.field[0], calibration.moment[0]};
-      break;
-    }
-    Block& curve = blocks[b + 1];
-    points += curve.field.size();
-    file.curves.push_back({calibration.field[0], calibration.moment[0], std::move(curve.field),
-                           std::move(curve.moment), curve.first_line});
-  }
-  if (const auto declared = file.header_number("NData")) {
-    if (*declared != static_cast<double>(points)) {
-      throw Error(fmt::format("{}: the header says NData = {} but the file has {} data points",
-                              location(source_name, line_number), *declared, points));
-    }
-  }
-  if (file.curves.empty()) {
-    throw Error(fmt::format("{}: the file has no FORC (only calibration points)",
-                            location(source_name, line_number)));
-  }
-  return file;
+  return ForcParser(text, source_name).parse();
 }
 
 MicromagForcFile read_micromag_forc(const std::filesystem::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) throw Error(fmt::format("cannot open MicroMag FORC file '{}'", path.string()));
-  std::ostringstream content;
-  content << stream.rdbuf();
-  return parse_micromag_forc(content.str(), path.string());
+  return parse_micromag_forc(read_file(path), path.string());
 }
 
 std::string_view to_string(ForcDriftCorrection correction) {

@@ -9,7 +9,9 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "line_reader.hpp"
+#include "micromag_columns.hpp"
 #include "micromag_lines.hpp"
+#include "micromag_sections.hpp"
 #include "text_encoding.hpp"
 #include "text_fields.hpp"
 
@@ -22,78 +24,10 @@ using detail::location;
 using detail::parse_number;
 using detail::trim;
 
-//! Segment and data rows start with a number; header lines start with a letter.
-bool is_comma_row(std::string_view content) {
-  if (content.empty() || content.find(',') == std::string_view::npos) return false;
-  const char first = content.front();
-  return (first >= '0' && first <= '9') || first == '+' || first == '-' || first == '.';
-}
-
-//! Words of a title line with the column of their centre.
-struct Word {
-  std::string_view text;
-  double centre = 0.0;
-};
-
-std::vector<Word> words_of(std::string_view line) {
-  std::vector<Word> words;
-  std::size_t position = 0;
-  while (true) {
-    const auto start = line.find_first_not_of(detail::kBlank, position);
-    if (start == std::string_view::npos) return words;
-    auto end = line.find_first_of(detail::kBlank, start);
-    if (end == std::string_view::npos) end = line.size();
-    words.push_back({line.substr(start, end - start), 0.5 * static_cast<double>(start + end)});
-    position = end;
-  }
-}
-
-//! Column names from the stacked title lines: the line with one word per column gives the names,
-//! words of other lines ("Raw", "Adjusted") are put before the name they stand over, and a units
-//! line ("(T)  (Am2)") is skipped.
-std::vector<std::string> column_names(const std::vector<std::string_view>& titles,
-                                      std::size_t count) {
-  std::vector<std::vector<Word>> lines;
-  for (const auto title : titles) {
-    auto words = words_of(title);
-    if (!words.empty() && !words.front().text.starts_with('(')) lines.push_back(std::move(words));
-  }
-  const auto name_line = std::find_if(lines.rbegin(), lines.rend(),
-                                      [&](const auto& words) { return words.size() == count; });
-  std::vector<std::string> names(count);
-  if (name_line == lines.rend()) {
-    for (std::size_t j = 0; j < count; ++j)
-      names[j] = fmt::format("Column {}", j + 1);
-    return names;
-  }
-  std::vector<std::string> qualifiers(count);
-  for (const auto& words : lines) {
-    if (&words == &*name_line) continue;
-    for (const auto& word : words) {
-      std::size_t nearest = 0;
-      for (std::size_t j = 1; j < count; ++j) {
-        if (std::abs((*name_line)[j].centre - word.centre) <
-            std::abs((*name_line)[nearest].centre - word.centre)) {
-          nearest = j;
-        }
-      }
-      qualifiers[nearest] += std::string(word.text) + " ";
-    }
-  }
-  for (std::size_t j = 0; j < count; ++j)
-    names[j] = qualifiers[j] + std::string((*name_line)[j].text);
-  // Repeated names (no qualifier line) get the column number.
-  for (std::size_t j = 0; j < count; ++j) {
-    if (std::count(names.begin(), names.end(), names[j]) > 1) {
-      names[j] = fmt::format("{} (column {})", names[j], j + 1);
-    }
-  }
-  return names;
-}
-
 class LoopParser {
  public:
-  LoopParser(std::string_view text, std::string_view source) : lines_(text), source_(source) {
+  LoopParser(std::string_view text, std::string_view source)
+      : lines_(text), sections_(lines_, source), source_(source) {
     file_.source = std::string(source);
   }
 
@@ -107,7 +41,7 @@ class LoopParser {
     }
     file_.format = std::string(trim(line));
     lines_.next(line);
-    file_.title = std::string(trim(line));
+    file_.title = utf8_from_latin1(trim(line));
     if (file_.title.find("First-order reversal") != std::string::npos) {
       throw Error(fmt::format(
           "{}: a MicroMag FORC file, not a hysteresis loop (read it with read_micromag_forc)",
@@ -118,84 +52,18 @@ class LoopParser {
           "{}: the title is '{}'; this reader knows MicroMag files titled '... Hysteresis loop'",
           location(source_, 2), file_.title));
     }
-    read_header();
-    const auto declared_segments = file_.header_number("Number of segments");
-    if (declared_segments) read_segment_table(*declared_segments);
+    file_.segments = sections_.read_head(file_.header);
     read_data();
     check_point_count();
+    file_.units = detail::column_units(sections_.titles(), file_.columns.size());
+    fill_units_from_header();
+    file_.initial_curve_points = initial_curve_points();
     return std::move(file_);
   }
 
  private:
-  // Header entries up to the first comma row. The text lines just above that row (after the last
-  // blank line) are the titles of the table it starts, not entries.
-  void read_header() {
-    std::string_view line;
-    std::size_t entries_since_blank = 0;
-    while (next_content(line)) {
-      if (line.empty()) {
-        entries_since_blank = 0;
-        titles_.clear();
-        continue;
-      }
-      if (is_comma_row(line)) {
-        file_.header.resize(file_.header.size() - entries_since_blank);
-        pending_row_ = line;
-        return;
-      }
-      titles_.push_back(raw_line_);
-      const auto split = line.find_first_of('\t') != std::string_view::npos
-                             ? line.find_first_of('\t')
-                             : line.find("  ");
-      if (split == std::string_view::npos) continue;  // a section name such as "INSTRUMENT"
-      file_.header.emplace_back(std::string(trim(line.substr(0, split))),
-                                std::string(trim(line.substr(split))));
-      ++entries_since_blank;
-    }
-    throw Error(fmt::format("{}: the file ends in its header, before any data (truncated?)",
-                            location(source_, lines_.number())));
-  }
-
-  void read_segment_table(double declared) {
-    std::size_t rows = 0;
-    std::string_view line = *pending_row_;
-    pending_row_.reset();
-    titles_.clear();
-    for (bool more = true; more && is_comma_row(line); more = next_content(line)) {
-      const auto fields = detail::split_fields(line, ',');
-      for (std::size_t j = 0; j < fields.size(); ++j) {
-        if (!parse_number(fields[j])) {
-          throw Error(fmt::format("{}: segment table, field {}: '{}' is not a finite number",
-                                  location(source_, lines_.number()), j + 1, fields[j]));
-        }
-      }
-      ++rows;
-    }
-    if (static_cast<double>(rows) != declared) {
-      throw Error(fmt::format(
-          "{}: the header says 'Number of segments {}' but the segment table has {} rows",
-          location(source_, lines_.number()), declared, rows));
-    }
-    file_.segments = rows;
-    // Column titles: the text lines after the last blank line before the data.
-    while (!lines_ended_ && !is_comma_row(line)) {
-      if (is_micromag_end_marker(line)) {
-        throw Error(fmt::format("{}: the file has a segment table but no data rows",
-                                location(source_, lines_.number())));
-      }
-      if (line.empty()) {
-        titles_.clear();
-      } else {
-        titles_.push_back(raw_line_);
-      }
-      if (!next_content(line)) break;
-    }
-    if (lines_ended_) throw_truncated();
-    pending_row_ = line;
-  }
-
   void read_data() {
-    std::string_view line = *pending_row_;
+    std::string_view line = sections_.first_row();
     file_.first_data_line = lines_.number();
     std::size_t columns = 0;
     bool segment_break = true;
@@ -205,7 +73,7 @@ class LoopParser {
       } else if (is_micromag_end_marker(line)) {
         break;
       } else {
-        if (!is_comma_row(line)) {
+        if (!detail::is_comma_row(line)) {
           throw Error(fmt::format(
               "{}: '{}' is not a data row ({} comma-separated numbers) nor the end marker "
               "'MicroMag 2900/3900 Data File ends'",
@@ -218,7 +86,7 @@ class LoopParser {
             throw Error(fmt::format("{}: a data row needs at least field and moment, got '{}'",
                                     location(source_, lines_.number()), line));
           }
-          file_.columns = column_names(titles_, columns);
+          file_.columns = detail::column_names(sections_.titles(), columns);
           file_.values.resize(columns);
         }
         if (fields.size() != columns) {
@@ -238,7 +106,7 @@ class LoopParser {
           file_.values[j].push_back(*value);
         }
       }
-      if (!next_content(line)) throw_truncated();
+      if (!sections_.next_content(line)) sections_.throw_truncated();
     }
   }
 
@@ -251,29 +119,50 @@ class LoopParser {
     }
   }
 
-  [[noreturn]] void throw_truncated() const {
-    throw Error(fmt::format(
-        "{}: the file ends without the line 'MicroMag 2900/3900 Data File ends' (truncated?)",
-        location(source_, lines_.number())));
+  // Files without a units line (Series 0015) state the system only: "Hybrid SI" (T, A m^2) or
+  // cgs (Oe, emu); a column gets the unit its name implies.
+  void fill_units_from_header() {
+    const auto system = file_.header_text("Units of measure").value_or("");
+    const bool si = system.find("SI") != std::string::npos;
+    const bool cgs = system.find("cgs") != std::string::npos ||
+                     system.find("CGS") != std::string::npos ||
+                     system.find("Cgs") != std::string::npos;
+    if (!si && !cgs) return;
+    const auto temperature = file_.header_text("Temperature in").value_or("");
+    for (std::size_t j = 0; j < file_.columns.size(); ++j) {
+      if (!file_.units[j].empty()) continue;
+      const auto& name = file_.columns[j];
+      if (name.find("Field") != std::string::npos) {
+        file_.units[j] = si ? "T" : "Oe";
+      } else if (name.find("Moment") != std::string::npos &&
+                 name.find("Normalized") == std::string::npos) {
+        file_.units[j] = si ? "A m²" : "emu";
+      } else if (name.find("Temperature") != std::string::npos) {
+        file_.units[j] = temperature == "Kelvin" ? "K" : temperature == "Celsius" ? "°C" : "";
+      }
+    }
   }
 
-  //! The next line, trimmed (raw_line_ keeps it untrimmed for the title alignment).
-  bool next_content(std::string_view& line) {
-    if (!lines_.next(raw_line_)) {
-      lines_ended_ = true;
-      return false;
-    }
-    line = trim(raw_line_);
-    return true;
+  // "Initial magnetization? Yes": the data start with the initial (virgin) curve from the
+  // demagnetised state up to the first turning field, which belongs to no loop cycle. It is the
+  // first data block when the branches are apart by blank lines, else the points before the
+  // field first turns back.
+  std::size_t initial_curve_points() const {
+    const auto initial = file_.header_text("Initial magnetization?");
+    if (!initial || *initial != "Yes" || file_.points() == 0) return 0;
+    if (file_.segment_starts.size() >= 2) return file_.segment_starts[1];
+    const auto& field = file_.field();
+    const double direction = field.size() >= 2 && field[1] < field[0] ? -1.0 : 1.0;
+    std::size_t k = 1;
+    while (k < field.size() && direction * (field[k] - field[k - 1]) >= 0.0)
+      ++k;
+    return k == field.size() ? 0 : k - 1;
   }
 
   detail::LineReader lines_;
+  detail::MicromagSectionReader sections_;
   std::string_view source_;
   MicromagLoopFile file_;
-  std::string_view raw_line_;
-  bool lines_ended_ = false;
-  std::optional<std::string_view> pending_row_;  //!< a comma row read ahead
-  std::vector<std::string_view> titles_;         //!< title lines above the table being read
 };
 
 }  // namespace

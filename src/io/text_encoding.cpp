@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 
 #include <fmt/format.h>
 
@@ -71,6 +72,62 @@ void check_text_encoding(std::string_view text, std::string_view source) {
       "e.g. with iconv -f {} -t UTF-8)",
       source, encoding.name, encoding.endian, encoding.bom ? "with a" : "without a",
       encoding.name));
+}
+
+bool is_utf8(std::string_view text) {
+  std::size_t k = 0;
+  while (k < text.size()) {
+    const auto lead = static_cast<unsigned char>(text[k]);
+    if (lead < 0x80) {
+      ++k;
+      continue;
+    }
+    // Continuation bytes after the lead byte, and the smallest code point of that length (an
+    // overlong form is not UTF-8).
+    std::size_t more = 0;
+    std::uint32_t code = 0;
+    std::uint32_t smallest = 0;
+    if ((lead >> 5) == 0x6) {
+      more = 1;
+      code = lead & 0x1Fu;
+      smallest = 0x80;
+    } else if ((lead >> 4) == 0xE) {
+      more = 2;
+      code = lead & 0x0Fu;
+      smallest = 0x800;
+    } else if ((lead >> 3) == 0x1E) {
+      more = 3;
+      code = lead & 0x07u;
+      smallest = 0x10000;
+    } else {
+      return false;
+    }
+    if (text.size() - k <= more) return false;
+    for (std::size_t j = 1; j <= more; ++j) {
+      const auto next = static_cast<unsigned char>(text[k + j]);
+      if ((next >> 6) != 0x2) return false;
+      code = (code << 6) | (next & 0x3Fu);
+    }
+    if (code < smallest || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
+    k += more + 1;
+  }
+  return true;
+}
+
+std::string utf8_from_latin1(std::string_view text) {
+  if (is_utf8(text)) return std::string(text);
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x80) {
+      out += c;
+    } else {
+      out += static_cast<char>(0xC0 | (byte >> 6));
+      out += static_cast<char>(0x80 | (byte & 0x3F));
+    }
+  }
+  return out;
 }
 
 }  // namespace hyst::io

@@ -8,6 +8,7 @@ namespace hyst::detail {
 ModelEntry prandtl_ishlinskii_entry();
 ModelEntry generalized_prandtl_ishlinskii_entry();
 ModelEntry preisach_entry();
+ModelEntry tabulated_preisach_entry();
 ModelEntry ikuta_sma_entry();
 ModelEntry krasnoselskii_pokrovskii_entry();
 ModelEntry maxwell_slip_entry();

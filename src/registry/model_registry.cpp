@@ -15,6 +15,7 @@ const ModelRegistry& ModelRegistry::builtin() {
     r.add(detail::prandtl_ishlinskii_entry());
     r.add(detail::generalized_prandtl_ishlinskii_entry());
     r.add(detail::preisach_entry());
+    r.add(detail::tabulated_preisach_entry());
     r.add(detail::ikuta_sma_entry());
     r.add(detail::krasnoselskii_pokrovskii_entry());
     r.add(detail::maxwell_slip_entry());

@@ -2,7 +2,6 @@
 // form, its numerical inverse and its NNLS fitter.
 
 #include <cmath>
-#include <limits>
 
 #include <fmt/format.h>
 
@@ -14,6 +13,7 @@
 #include "hyst/models/preisach.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
+#include "preisach_state_json.hpp"
 
 namespace hyst::detail {
 namespace {
@@ -37,16 +37,6 @@ Preisach::Params preisach_params_from_json(const nlohmann::json& params_json,
   return params;
 }
 
-// The state in a file: the saturation the history starts from, the stored extrema, and the last
-// input (null when no input was applied since saturation; JSON has no infinity).
-nlohmann::json preisach_state_to_json(const PreisachState& state) {
-  const auto memory = state.memory();
-  return {{"saturation",
-           state.from_positive_saturation() ? "positive_saturation" : "negative_saturation"},
-          {"memory", std::vector<double>(memory.begin(), memory.end())},
-          {"input", std::isfinite(state.input) ? nlohmann::json(state.input) : nlohmann::json()}};
-}
-
 struct PreisachCodec {
   using Model = Preisach;
   static constexpr std::string_view name = "preisach";
@@ -65,22 +55,7 @@ struct PreisachCodec {
     return preisach_state_to_json(state);
   }
   static PreisachState state_from_json(const Model& model, JsonFields& fields) {
-    const auto saturation_text = fields.string("saturation");
-    const auto memory = fields.numbers("memory");
-    const auto* input = fields.raw("input");
-    try {
-      const auto saturation = preisach_initial_state_from_string(saturation_text);
-      if (saturation == PreisachInitialState::demagnetised) {
-        throw Error("saturation must be negative_saturation or positive_saturation");
-      }
-      double last = saturation == PreisachInitialState::positive_saturation
-                        ? std::numeric_limits<double>::infinity()
-                        : -std::numeric_limits<double>::infinity();
-      if (input && !input->is_null()) last = json_number(*input, fields.path_of("input"));
-      return model.make_state(saturation, memory, last);
-    } catch (const Error& error) {
-      throw Error(fmt::format("{}: {}", fields.path(), error.what()));
-    }
+    return preisach_state_from_json(model, fields);
   }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.weights.size() + 1;

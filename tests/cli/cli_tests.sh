@@ -868,9 +868,131 @@ assert (v['unit'], v['samples'], v['reversals'], v['cycles']) == ('V', 401, 2, 1
   # reversal (at -0.5 T) and no complete cycle.
   expect_ok "$HYST" data info \
     "$HYST_SHARED_DATA_DIR/hystlab_vsm_hysteresis_loops/fig03a-f_noise_repeats/Noise_test_c100.000"
-  expect_stdout "MicroMag hysteresis loop file, 2 columns" "table: 2 columns, 402 rows"
-  grep -E '^  Field +402 +-0\.49[0-9]+ +0\.49[0-9]+ +1 +0$' "$WORK/stdout" >/dev/null ||
+  expect_stdout "MicroMag hysteresis loop file, 2 columns (Series 0016.002)" \
+    "table: 2 columns, 402 rows; units of measure Hybrid SI, segments 2"
+  grep -E '^  Field +T +402 +-0\.49[0-9]+ +0\.49[0-9]+ +1 +0$' "$WORK/stdout" >/dev/null ||
     fail "Noise_test Field line: $(grep '^  Field' "$WORK/stdout")"
+}
+
+# --- MicroMag FORC files --------------------------------------------------------------------
+
+FORC_0016="$(cd "$(dirname "${BASH_SOURCE[0]}")/../data/micromag" && pwd)/series_0016.forc"
+
+agm_forc_file() {
+  AGM_FORC="$HYST_SHARED_DATA_DIR/pmagpy_forc_micromag_agm/conventional_example.forc"
+  if [ ! -f "$AGM_FORC" ]; then
+    echo "SKIP: $AGM_FORC not found"
+    exit 77
+  fi
+}
+
+# forc_counts FILE EVERY: "curves points held_curves held_points" counted by awk from the file:
+# after the header, blocks apart by blank lines alternate calibration point, curve.
+forc_counts() {
+  tr -d '\r' <"$1" | awk -v every="$2" '
+    /^MicroMag .*Data File ends/ { flush(); exit }
+    /^[+-]?[0-9.]+([eE][+-]?[0-9]+)?,/ { data = 1; rows++; next }
+    /^ *$/ { flush(); next }
+    function flush() {
+      if (rows == 0) return
+      if (block++ % 2 == 1) {
+        curves++; points += rows
+        if (curves % every == 0) { held++; held_points += rows }
+      }
+      rows = 0
+    }
+    END { print curves, points, held, held_points }'
+}
+
+case_data_info_forc() {
+  agm_forc_file
+  # PROVENANCE.md: 120 FORCs, the first a single point, the last 85 points, 8514 data rows of
+  # which 120 are calibration points, HCal = 0.2350512 T, H_r from +0.118 to -0.218 T.
+  expect_ok "$HYST" data info "$AGM_FORC"
+  expect_stdout "MicroMag FORC file, 120 curves (Series 0015)" "layout Series 0015" \
+    "curves              120 (1 to 85 points each)" "points              8394 (and 120 calibration" \
+    "reversal fields     -0.218002 T .. 0.118282 T" "calibration field   0.235051 T (header HCal)" \
+    "moment unit         A m²"
+  read -r curves points _ <<<"$(forc_counts "$AGM_FORC" 4)"
+  [ "$curves $points" = "120 8394" ] || fail "awk counts $curves curves, $points points"
+  expect_ok "$HYST" data info "$AGM_FORC" --json
+  python3 -c "
+import json
+f = json.load(open('$WORK/stdout'))['forc']
+assert (f['curves'], f['points'], f['calibration_points'], f['most_points']) == (120, 8394, 120, 85), f
+" || fail "data info --json of the FORC file"
+  # The Series 0016 test file (make_series_0016_forc.py): 16 curves of 2..17 points, 17
+  # calibration points at 0.3 T (one after the last curve), units from its units line.
+  expect_ok "$HYST" data info "$FORC_0016"
+  expect_stdout "MicroMag FORC file, 16 curves (Series 0016.002)" \
+    "curves              16 (2 to 17 points each)" "points              152 (and 17 calibration" \
+    "calibration field   0.3 T (header HCal)" "moment unit         Am²" \
+    "calibration drift   -1 % of the calibration moment"
+  # A loop file: its segments (blank-line separated branches) and the units of its units line.
+  expect_ok "$HYST" data info "$HYST_SHARED_DATA_DIR/hystlab_vsm_hysteresis_loops/fig10/A4.hys"
+  expect_stdout "segments 2"
+  grep -E '^  Adjusted Moment +Am² +1202 ' "$WORK/stdout" >/dev/null ||
+    fail "A4 Adjusted Moment line: $(grep '^  Adjusted Moment' "$WORK/stdout")"
+  # A FORC file is no input/output record: the other commands point to --forc.
+  expect_error 1 "conventional_example.forc: a MicroMag FORC file" "hyst fit preisach --forc" -- \
+    "$HYST" fit pi --data "$AGM_FORC" --input Field --output Moment --out m.json
+  expect_error 1 "a MicroMag FORC file" -- "$HYST" data extract "$FORC_0016" --out x.csv
+}
+
+case_fit_forc() {
+  agm_forc_file
+  read -r curves points held held_points <<<"$(forc_counts "$AGM_FORC" 4)"
+  expect_ok "$HYST" fit preisach --forc "$AGM_FORC" --drift multiplicative --hold-out-every 4 \
+    --option intervals=32 --out agm.json --report agm.txt
+  expect_stdout "tabulated_preisach fitted by nnls" \
+    "on $((points - held_points)) samples" "on $held_points samples" \
+    "every 4th of $curves FORCs ($held curves, $held_points points)" \
+    "moments corrected for the drift of the calibration points (multiplicative)" "wrote agm.json"
+  grep -qE "^  validation +$held_points " agm.txt || fail "agm.txt has no validation row of $held_points samples"
+  # The measurement noise is about 0.03 % of the moment range (docs/results.md): held-out
+  # curves must be predicted within a few times that.
+  python3 -c "
+import json
+m = json.load(open('agm.json'))
+assert m['model'] == 'tabulated_preisach', m['model']
+info = m['info']
+assert info['data']['curves'] == $curves and info['data']['held_out_curves'] == $held, info['data']
+assert info['validation']['samples'] == $held_points, info['validation']
+assert info['fit']['nrmse_percent'] < 0.1 and info['validation']['nrmse_percent'] < 0.1, info
+assert len(m['params']['levels']) == 33 and len(m['params']['values']) == 32 * 33 // 2
+assert m['params']['initial_state'] == 'positive_saturation'
+" || fail "agm.json"
+  # The model file works like any other: info, simulate, invert.
+  expect_ok "$HYST" info agm.json
+  expect_stdout "model:      tabulated_preisach" "inverse:    yes"
+  printf 'v\n0.3\n-0.1\n0.05\n-0.2\n0.1\n' >h.csv
+  expect_ok "$HYST" simulate --model agm.json --input h.csv --column v --out m.csv
+  expect_ok "$HYST" invert --model agm.json --target m.csv --column y --out h2.csv
+  # The Series 0016 test file: 16 curves of k + 2 points (k = 0..15); every 4th held out:
+  # curves 4, 8, 12, 16 with 5 + 9 + 13 + 17 = 44 points, 108 left to fit.
+  expect_ok "$HYST" fit preisach --forc "$FORC_0016" --hold-out-every 4 --option intervals=8 \
+    --out vsm.json
+  expect_stdout "on 108 samples" "on 44 samples" "every 4th of 16 FORCs (4 curves, 44 points)"
+  read -r curves points held held_points <<<"$(forc_counts "$FORC_0016" 4)"
+  [ "$curves $points $held $held_points" = "16 152 4 44" ] ||
+    fail "awk counts of series_0016.forc: $curves $points $held $held_points"
+  # Bad combinations and options: one line each, the model file not written.
+  expect_error 1 "model 'pi' is not fitted from first-order reversal curves" -- \
+    "$HYST" fit pi --forc "$FORC_0016" --out x.json
+  expect_error 1 "needs --data, --input and --output (or, for the Preisach model, --forc" -- \
+    "$HYST" fit preisach --out x.json
+  expect_error 2 "excludes" -- "$HYST" fit preisach --forc "$FORC_0016" --data x.csv --out x.json
+  expect_error 1 "every 1st curve leaves none to fit" -- \
+    "$HYST" fit preisach --forc "$FORC_0016" --hold-out-every 1 --out x.json
+  expect_error 1 "unknown FORC drift correction 'linear'" -- \
+    "$HYST" fit preisach --forc "$FORC_0016" --drift linear --out x.json
+  expect_error 1 "fit options.intervalls: unknown field" -- \
+    "$HYST" fit preisach --forc "$FORC_0016" --option intervalls=8 --out x.json
+  expect_error 1 "series_0016.forc: FORC fit: the fitted curves have 152 points, fewer than" -- \
+    "$HYST" fit preisach --forc "$FORC_0016" --out x.json
+  expect_error 1 "is the same file as the input --forc" -- \
+    "$HYST" fit preisach --forc "$FORC_0016" --out "$FORC_0016"
+  [ ! -e x.json ] || fail "x.json was written by a failed fit"
 }
 
 case_data_extract_fit() {

@@ -3,6 +3,8 @@
 
 #include "hyst/data/record_info.hpp"
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -103,6 +105,71 @@ TEST(RecordInfo, AixacctTableAgainstTheInstrumentsFigures) {
   EXPECT_EQ(voltage.cycles, 1U);
   ASSERT_EQ(table.loops.size(), 1U);
   EXPECT_NEAR(table.loops[0].area, *metadata.metadata_number("Wloss [uJ/cm2]"), 0.05);
+}
+
+TEST(RecordInfo, ForcFileShowsItsCurves) {
+  const std::filesystem::path path =
+      HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/conventional_example.forc";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
+  const auto info = record_info(path, {});
+  EXPECT_TRUE(info.tables.empty());
+  ASSERT_TRUE(info.forc.has_value());
+  const auto& f = *info.forc;
+  // PROVENANCE.md: 120 FORCs (the first a single point), 8514 data rows of which 120 are
+  // calibration points, the last FORC 85 points, H_r from +0.118 T down to -0.218 T,
+  // HCal = 0.2350512 T in the header, calibration points at about 0.237 T.
+  EXPECT_EQ(f.layout, "Series 0015");
+  EXPECT_EQ(f.curves, 120U);
+  EXPECT_EQ(f.points, 8514U - 120U);
+  EXPECT_EQ(f.calibration_points, 120U);
+  EXPECT_EQ(f.fewest_points, 1U);
+  EXPECT_EQ(f.reversal_max, 0.1182822);
+  EXPECT_EQ(f.reversal_min, -0.218002);
+  EXPECT_EQ(f.calibration_field, 0.2350512);
+  EXPECT_NEAR(f.calibration_field_min, 0.237, 1e-3);
+  EXPECT_NEAR(f.calibration_field_max, 0.237, 1e-3);
+  EXPECT_NEAR(f.calibration_drift_percent, -1.29, 0.01);
+  EXPECT_EQ(f.field_unit, "T");
+  EXPECT_EQ(f.moment_unit, "A m\u00b2");
+  const auto json = record_info_json(info);
+  EXPECT_EQ(json["forc"]["curves"], 120);
+  EXPECT_EQ(json["tables"].size(), 0U);
+}
+
+TEST_F(RecordInfoTest, LoopCyclesOfAMicromagLoopFileStartAfterTheInitialCurve) {
+  // 0 -> 0.5 initial curve (rows 0-2), then 0.5 -> -0.5 -> 0.5 (rows 3-12) and down again (rows
+  // 13-17): one cycle of the loop, from row 3 to the 0.5 it returns to (row 12, or row 13, the
+  // same field, where the field turns down again). Taken from row 0 instead, the first cycle
+  // would start on the initial curve at 0.
+  const auto path = dir_ / "virgin.hys";
+  std::ofstream(path) << "MicroMag 2900/3900 Data File (Series 0016.002)\n"
+                         "Direct moment vs. field; Hysteresis loop\n"
+                         "\n"
+                         "SCRIPT\n"
+                         "Units of measure                Hybrid SI\n"
+                         "Initial magnetization?          Yes\n"
+                         "\n"
+                         "    Field         Moment\n"
+                         "0.0,0.0\n0.25,0.5\n0.5,1.0\n\n"
+                         "0.5,1.0\n0.25,0.9\n0.0,0.6\n-0.25,-0.5\n-0.5,-1.0\n\n"
+                         "-0.5,-1.0\n-0.25,-0.9\n0.0,-0.6\n0.25,0.5\n0.5,1.0\n\n"
+                         "0.5,1.0\n0.25,0.9\n0.0,0.6\n-0.25,-0.5\n-0.5,-1.0\n"
+                         "\n"
+                         "MicroMag 2900/3900 Data File ends\n";
+  RecordInfoOptions options;
+  options.loop.emplace("Field", "Moment");
+  const auto info = record_info(path, options);
+  ASSERT_EQ(info.tables.size(), 1U);
+  const auto& table = info.tables.front();
+  EXPECT_EQ(table.columns[0].unit, "T");
+  EXPECT_EQ(table.columns[1].unit, "A m\u00b2");
+  ASSERT_EQ(table.loops.size(), 1U);
+  EXPECT_EQ(table.loops[0].first, 3U);
+  EXPECT_TRUE(table.loops[0].last == 12U || table.loops[0].last == 13U) << table.loops[0].last;
+  bool initial_listed = false;
+  for (const auto& [key, value] : table.metadata)
+    initial_listed = initial_listed || (key == "initial curve" && value.find("rows 0..2") == 0);
+  EXPECT_TRUE(initial_listed);
 }
 
 }  // namespace

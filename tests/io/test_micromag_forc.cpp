@@ -1,5 +1,7 @@
-// The MicroMag FORC reader: the measured example file (structure and counts from its
-// PROVENANCE.md), small hand-made files, drift correction, and malformed files.
+// The MicroMag FORC reader: the measured example file (Series 0015, structure and counts from its
+// PROVENANCE.md), the Series 0016 test file (tests/data/micromag/series_0016.forc: counts by
+// construction, see make_series_0016_forc.py, and lines counted in the file), small hand-made
+// files of both layouts, drift correction, malformed files and the input limits.
 
 #include "hyst/io/micromag_forc.hpp"
 
@@ -12,12 +14,15 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "hyst/io/atomic_file.hpp"
+#include "hyst/io/limits.hpp"
 
 namespace hyst::io {
 namespace {
 
 const char* const kFile =
     HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/conventional_example.forc";
+const char* const kVsmFile = HYST_TEST_DATA_DIR "/micromag/series_0016.forc";
 
 // A small file in the same layout: calibration, curve, calibration, curve, end marker.
 std::string small_file(std::string_view data, std::string_view ndata = "5") {
@@ -153,13 +158,188 @@ TEST(MicromagForc, ErrorsNameTheFileAndLine) {
                     "cal.forc:12: a calibration block has 2 points; expected 1");
   EXPECT_HYST_ERROR(
       parse_micromag_forc("MicroMag 2900/3900 Data File (Series 0015)\nFORC\nA = 1\n", "h.forc"),
-      "h.forc:3: no 'NData = ...' line");
+      "h.forc:3: the file ends in its header, before any data (truncated?)");
   EXPECT_HYST_ERROR(read_micromag_forc("/nonexistent/file.forc"),
-                    "cannot open MicroMag FORC file '/nonexistent/file.forc'");
+                    "cannot open '/nonexistent/file.forc'");
   auto zero = parse_micromag_forc(small_file(kData), "z.forc");
   zero.curves[1].calibration_moment = 0.0;
   EXPECT_HYST_ERROR(correct_drift(zero, ForcDriftCorrection::multiplicative),
                     "z.forc: calibration moment before curve 1 is 0");
+}
+
+TEST(MicromagForc, ReadsTheSeries0016TestFile) {
+  const auto file = read_micromag_forc(kVsmFile);
+  EXPECT_EQ(file.layout, MicromagForcLayout::series_0016);
+  EXPECT_EQ(file.format, "MicroMag 2900/3900 Data File (Series 0016.002)");
+  EXPECT_EQ(file.title, "First-order reversal curves");
+  EXPECT_EQ(file.header_text("Configuration"), "VSM");
+  EXPECT_EQ(file.header_text("Units of measure"), "Hybrid SI");
+  EXPECT_EQ(file.header_number("HCal"), 0.3);
+  EXPECT_EQ(file.header_number("HSat"), 0.5);
+  EXPECT_EQ(file.header_number("NForc"), 16.0);
+  EXPECT_EQ(file.header_number("Number of data"), 169.0);
+  EXPECT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment", "Normalized Moment"}));
+  // "(Am\xB2)" in Latin-1 in the file; UTF-8 here.
+  EXPECT_EQ(file.units, (std::vector<std::string>{"T", "Am\u00b2", "Am\u00b2/kg"}));
+  // 16 curves of 2, 3, ..., 17 points; 16 + 1 calibration points.
+  ASSERT_EQ(file.curves.size(), 16U);
+  EXPECT_EQ(file.points(), 152U);
+  EXPECT_EQ(file.calibration_points(), 17U);
+  ASSERT_TRUE(file.final_calibration.has_value());
+  EXPECT_EQ(file.final_calibration->first, 0.3004);
+  EXPECT_EQ(file.final_calibration->second, 40.194e-6);
+  for (std::size_t k = 0; k < file.curves.size(); ++k) {
+    const auto& curve = file.curves[k];
+    ASSERT_EQ(curve.field.size(), k + 2) << "curve " << k;
+    ASSERT_EQ(curve.more_columns.size(), 1U);
+    ASSERT_EQ(curve.more_columns[0].size(), k + 2);
+    for (std::size_t i = 1; i < curve.field.size(); ++i)
+      ASSERT_GT(curve.field[i], curve.field[i - 1]);
+    EXPECT_NEAR(curve.calibration_field, 0.3, 5e-4);
+  }
+  // Lines 58-61 of the file: the first calibration point, a blank line, the first FORC.
+  const auto& first = file.curves.front();
+  EXPECT_EQ(first.first_line, 60U);
+  EXPECT_EQ(first.calibration_field, 0.3004);
+  EXPECT_EQ(first.calibration_moment, 40.6e-6);
+  EXPECT_EQ(first.field, (std::vector<double>{70.03e-3, 79.97e-3}));
+  EXPECT_EQ(first.moment, (std::vector<double>{40.14e-6, 40.16e-6}));
+  EXPECT_EQ(first.more_columns[0], (std::vector<double>{2.007, 2.008}));
+  EXPECT_EQ(file.curves.back().first_line, 240U);
+  EXPECT_EQ(file.curves.back().field.front(), -79.97e-3);
+  // The calibration moment falls by 1 % over the run (the file's construction).
+  EXPECT_NEAR(file.final_calibration->second / first.calibration_moment, 0.99, 1e-6);
+  EXPECT_TRUE(looks_like_micromag_forc(read_file(kVsmFile)));
+}
+
+// A small Series 0016 file: sections, stacked titles, three columns.
+std::string vsm_file(
+    std::string_view data, std::string_view count = "5",
+    std::string_view units = "     (T)           (Am\xB2)          (Am\xB2/kg)\r\n") {
+  return fmt::format(
+      "MicroMag 2900/3900 Data File (Series 0016.002)\r\n"
+      "First-order reversal curves\r\n"
+      "\r\n"
+      "INSTRUMENT\r\n"
+      "Configuration                   VSM\r\n"
+      "Units of measure                Hybrid SI\r\n"
+      "A key nobody knows             +1.5E+00\r\n"
+      "\r\n"
+      "\r\n"
+      "SCRIPT\r\n"
+      "HCal                           +300.0000E-03\r\n"
+      "Number of data                  {}\r\n"
+      "\r\n"
+      "                                      Normalized\r\n"
+      "    Field          Moment               Moment\r\n"
+      "{}"
+      "{}"
+      "\r\n"
+      "MicroMag 2900/3900 Data File ends\r\n",
+      count, units, data);
+}
+
+constexpr std::string_view kVsmData =
+    "+3.0E-01,+1.0E-05,+1.0E+00\r\n"
+    "\r\n"
+    "+1.0E-01,+5.0E-06,+5.0E-01\r\n"
+    "\r\n"
+    "+3.0E-01,+9.0E-06,+9.0E-01\r\n"
+    "\r\n"
+    "-1.0E-01,-5.0E-06,-5.0E-01\r\n"
+    "+0.0E+00,+1.0E-06,+1.0E-01\r\n";
+
+TEST(MicromagForc, ParsesSmallSeries0016Files) {
+  const auto file = parse_micromag_forc(vsm_file(kVsmData), "v.forc");
+  EXPECT_EQ(file.layout, MicromagForcLayout::series_0016);
+  EXPECT_EQ(file.header_number("A key nobody knows"), 1.5);
+  EXPECT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment", "Normalized Moment"}));
+  EXPECT_EQ(file.units[1], "Am\u00b2");
+  ASSERT_EQ(file.curves.size(), 2U);
+  EXPECT_EQ(file.curves[1].field, (std::vector<double>{-0.1, 0.0}));
+  EXPECT_EQ(file.curves[1].calibration_moment, 9e-6);
+  EXPECT_EQ(file.curves[1].more_columns[0], (std::vector<double>{-0.5, 0.1}));
+  EXPECT_EQ(file.curves[1].first_line, 23U);
+  // "Number of data" may count the FORC points only (3 here) as well as every row (5).
+  EXPECT_EQ(parse_micromag_forc(vsm_file(kVsmData, "3"), "v.forc").points(), 3U);
+  // A units line already in UTF-8 stays as it is; without one, the units follow "Hybrid SI".
+  EXPECT_EQ(
+      parse_micromag_forc(vsm_file(kVsmData, "5", "  (T)  (Am\u00b2)  (Am\u00b2/kg)\r\n"), "u.forc")
+          .units[1],
+      "Am\u00b2");
+  EXPECT_EQ(parse_micromag_forc(vsm_file(kVsmData, "5", ""), "n.forc").units,
+            (std::vector<std::string>{"T", "A m\u00b2", ""}));
+  // LF line ends, blank lines doubled.
+  std::string lf = vsm_file(kVsmData);
+  std::erase(lf, '\r');
+  const auto doubled = lf.replace(lf.find("\n\n-1.0E-01"), 2, "\n\n\n");
+  EXPECT_EQ(parse_micromag_forc(doubled, "lf.forc").curves.size(), 2U);
+  // The calibration point may open the block of its curve (the field falls from HCal to H_r).
+  constexpr std::string_view kInline =
+      "+3.0E-01,+1.0E-05,+1.0E+00\r\n"
+      "+1.0E-01,+5.0E-06,+5.0E-01\r\n"
+      "\r\n"
+      "+3.0E-01,+9.0E-06,+9.0E-01\r\n"
+      "-1.0E-01,-5.0E-06,-5.0E-01\r\n"
+      "+0.0E+00,+1.0E-06,+1.0E-01\r\n";
+  const auto inline_file = parse_micromag_forc(vsm_file(kInline), "i.forc");
+  ASSERT_EQ(inline_file.curves.size(), 2U);
+  EXPECT_EQ(inline_file.curves[0].field, (std::vector<double>{0.1}));
+  EXPECT_EQ(inline_file.curves[1].calibration_moment, 9e-6);
+  EXPECT_EQ(inline_file.curves[1].first_line, 21U);
+  EXPECT_FALSE(inline_file.final_calibration.has_value());
+  // Drift correction leaves the further columns as measured.
+  const auto corrected = correct_drift(file, ForcDriftCorrection::multiplicative);
+  EXPECT_EQ(corrected.curves[1].more_columns, file.curves[1].more_columns);
+  EXPECT_DOUBLE_EQ(corrected.curves[1].moment[0], -5e-6 * 1e-5 / 9e-6);
+}
+
+TEST(MicromagForc, MalformedSeries0016FilesNameFileAndLine) {
+  std::string bad(kVsmData);
+  bad.replace(bad.find("+5.0E-01"), 8, "x");
+  EXPECT_HYST_ERROR(parse_micromag_forc(vsm_file(bad), "b.forc"),
+                    "b.forc:19: column 3 ('Normalized Moment'): 'x' is not a finite number");
+  bad = kVsmData;
+  bad.replace(bad.find(",+5.0E-01"), 9, "");
+  EXPECT_HYST_ERROR(parse_micromag_forc(vsm_file(bad), "b.forc"),
+                    "b.forc:19: '+1.0E-01,+5.0E-06' has 2 comma-separated fields; the data rows "
+                    "have 3 (Field, Moment, Normalized Moment)");
+  EXPECT_HYST_ERROR(parse_micromag_forc(vsm_file(kVsmData, "7"), "b.forc"),
+                    "b.forc:26: the header says 'Number of data 7' but the file has 5 data rows "
+                    "(3 FORC points and 2 calibration points)");
+  std::string cut = vsm_file(kVsmData);
+  cut.resize(cut.find("MicroMag 2900/3900 Data File ends"));
+  EXPECT_HYST_ERROR(parse_micromag_forc(cut, "c.forc"),
+                    "c.forc:25: the file ends without the line 'MicroMag 2900/3900 Data File "
+                    "ends' (truncated?)");
+  // A block of two points whose field does not fall is no calibration point.
+  bad = kVsmData;
+  bad.insert(0, "+3.0E-01,+1.0E-05,+1.0E+00\r\n");
+  EXPECT_HYST_ERROR(parse_micromag_forc(vsm_file(bad, "6"), "d.forc"),
+                    "d.forc:17: a calibration block has 2 points; expected 1");
+  const std::string header_only = vsm_file(kVsmData).substr(0, vsm_file(kVsmData).find("+3.0E-01"));
+  EXPECT_HYST_ERROR(parse_micromag_forc(header_only, "h.forc"),
+                    "h.forc:16: the file ends in its header, before any data (truncated?)");
+  EXPECT_HYST_ERROR(
+      parse_micromag_forc(header_only + "MicroMag 2900/3900 Data File ends\r\n", "e.forc"),
+      "e.forc:17: the end marker follows the header: the file has no data rows");
+  EXPECT_HYST_ERROR(parse_micromag_forc(vsm_file("+3.0E-01,+1.0E-05,+1.0E+00\r\n", "1"), "o.forc"),
+                    "o.forc:19: the file has no FORC (only calibration points)");
+  // A loop file is pointed to its reader.
+  std::string loop = vsm_file(kVsmData);
+  loop.replace(loop.find("First-order reversal curves"), 27,
+               "Direct moment vs. field; Hysteresis loop");
+  EXPECT_HYST_ERROR(parse_micromag_forc(loop, "l.forc"),
+                    "l.forc:2: a MicroMag hysteresis loop file, not a FORC file");
+}
+
+TEST(MicromagForc, CurveCountIsLimited) {
+  // One calibration point and one single-point curve per FORC, a few bytes each.
+  std::string data;
+  for (std::size_t k = 0; k <= limits::kMaxForcCurves; ++k)
+    data += "2,1\n\n1,1\n\n";
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(data, "0"), "many.forc"),
+                    "more than 100000 FORCs; the limit is 100000 curves per file");
 }
 
 }  // namespace

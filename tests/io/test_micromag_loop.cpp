@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -200,6 +201,49 @@ TEST(MicromagLoop, LooksLikeChecksTheFirstTwoLines) {
                                "First-order reversal curves\n"));
   EXPECT_FALSE(looks_like_micromag_loop("t,v\n0,1\n"));
   EXPECT_FALSE(looks_like_micromag_loop(""));
+}
+
+TEST(MicromagLoop, UnitsFromTheUnitsLineOrTheHeader) {
+  // A4.hys writes "(Am\xB2)" in Latin-1 under the moment columns.
+  EXPECT_EQ(read_micromag_loop(kFolder / "fig10" / "A4.hys").units,
+            (std::vector<std::string>{"T", "Am\u00b2", "T", "Am\u00b2"}));
+  // CP4Q.hyst (Series 0015) has no units line: "Units of measure  Hybrid SI".
+  EXPECT_EQ(read_micromag_loop(kFolder / "fig01" / "CP4Q.hyst").units,
+            (std::vector<std::string>{"T", "A m\u00b2", "T", "A m\u00b2"}));
+  EXPECT_EQ(parse_micromag_loop(small_file(kFourRows), "u.hys").units,
+            (std::vector<std::string>{"T", "Am2", "Am2"}));
+  EXPECT_EQ(read_micromag_loop(kFolder / "fig10" / "A4.hys").initial_curve_points, 0U);
+}
+
+// A loop measured after an initial (virgin) curve from the demagnetised state: 0 -> 0.5 (3
+// points), then 0.5 -> -0.5 and -0.5 -> 0.5 (5 points each).
+std::string loop_with_initial_curve(bool blank_lines, std::string_view initial = "Yes") {
+  const std::string gap = blank_lines ? "\r\n" : "";
+  return fmt::format(
+      "MicroMag 2900/3900 Data File (Series 0016.002)\r\n"
+      "Direct moment vs. field; Hysteresis loop\r\n"
+      "\r\n"
+      "SCRIPT\r\n"
+      "Units of measure                Hybrid SI\r\n"
+      "Initial magnetization?          {}\r\n"
+      "Number of data                  13\r\n"
+      "\r\n"
+      "    Field         Moment\r\n"
+      "0.0,0.0\r\n0.25,0.5\r\n0.5,1.0\r\n{}"
+      "0.5,1.0\r\n0.25,0.9\r\n0.0,0.6\r\n-0.25,-0.5\r\n-0.5,-1.0\r\n{}"
+      "-0.5,-1.0\r\n-0.25,-0.9\r\n0.0,-0.6\r\n0.25,0.5\r\n0.5,1.0\r\n"
+      "\r\n"
+      "MicroMag 2900/3900 Data File ends\r\n",
+      initial, gap, gap);
+}
+
+TEST(MicromagLoop, InitialCurveIsTheFirstBlockOrRunsToTheFirstTurn) {
+  EXPECT_EQ(parse_micromag_loop(loop_with_initial_curve(true), "i.hys").initial_curve_points, 3U);
+  // Without blank lines: the points before the field first turns back; the turning field 0.5 is
+  // measured twice (rows 2 and 3), and the loop starts at the second.
+  EXPECT_EQ(parse_micromag_loop(loop_with_initial_curve(false), "i.hys").initial_curve_points, 3U);
+  EXPECT_EQ(parse_micromag_loop(loop_with_initial_curve(true, "No"), "i.hys").initial_curve_points,
+            0U);
 }
 
 }  // namespace

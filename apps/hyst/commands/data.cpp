@@ -1,6 +1,6 @@
 // hyst data info FILE: the tables of a measured data file (CSV, MATLAB .mat, aixACCT export,
 // MicroMag loop file), their columns with units, lengths and ranges, and the reversal points and
-// cycles of each column.
+// cycles of each column; for a MicroMag FORC file its curves.
 // hyst data extract FILE: chosen columns of one table as CSV, ready for 'hyst fit'.
 
 #include <cstddef>
@@ -49,6 +49,30 @@ std::string crossings_text(const std::vector<data::LevelCrossing>& crossings) {
   return text.empty() ? std::string("none") : text;
 }
 
+std::string with_unit(double value, const std::string& unit) {
+  return unit.empty() ? fmt::format("{:.6g}", value) : fmt::format("{:.6g} {}", value, unit);
+}
+
+void print_forc(const data::ForcInfo& f) {
+  fmt::print("layout {}; first-order reversal curves, each after a drift-calibration point\n",
+             f.layout);
+  fmt::print("  curves              {} ({} to {} points each)\n", f.curves, f.fewest_points,
+             f.most_points);
+  fmt::print("  points              {} (and {} calibration points)\n", f.points,
+             f.calibration_points);
+  fmt::print("  field               {} .. {}\n", with_unit(f.field_min, f.field_unit),
+             with_unit(f.field_max, f.field_unit));
+  fmt::print("  reversal fields     {} .. {}\n", with_unit(f.reversal_min, f.field_unit),
+             with_unit(f.reversal_max, f.field_unit));
+  fmt::print("  calibration field   {} (header HCal), measured at {} .. {}\n",
+             f.calibration_field ? with_unit(*f.calibration_field, f.field_unit) : "-",
+             with_unit(f.calibration_field_min, f.field_unit),
+             with_unit(f.calibration_field_max, f.field_unit));
+  fmt::print("  calibration drift   {:+.3g} % of the calibration moment over the run\n",
+             f.calibration_drift_percent);
+  fmt::print("  moment unit         {}\n", f.moment_unit.empty() ? "-" : f.moment_unit);
+}
+
 void run_info(const InfoOptions& options) {
   if (!options.loop.empty() && options.loop.size() != 2) {
     throw Error(
@@ -66,6 +90,10 @@ void run_info(const InfoOptions& options) {
   }
 
   fmt::print("{}: {}\n", info.file, info.format);
+  if (info.forc) {
+    print_forc(*info.forc);
+    return;
+  }
   fmt::print("reversals and cycles with a hysteresis band of {:.3g} % of each column's range\n",
              100.0 * options.band_fraction);
   for (const auto& table : info.tables) {
@@ -109,7 +137,7 @@ void run_extract(const ExtractOptions& options) {
 void add_data_command(CLI::App& app) {
   auto* command = app.add_subcommand("data",
                                      "Inspect measured data files (CSV, .mat, aixACCT, MicroMag "
-                                     "loop) and extract columns as CSV.");
+                                     "loop and FORC) and extract columns as CSV.");
   command->require_subcommand(1);
   command->footer(R"(Examples:
   hyst data info RMN_TRAP_SLOW.dat --table 6 --loop V+,P1
@@ -120,7 +148,8 @@ Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
   auto* info_command = command->add_subcommand(
       "info", "Tables, columns, units, lengths, ranges, reversal points and cycles of a file.");
   info_command
-      ->add_option("file", info->file, "CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
+      ->add_option("file", info->file,
+                   "CSV, MATLAB .mat, aixACCT export, MicroMag loop or FORC file")
       ->required();
   info_command->add_option("--table", info->table, "Only measurement table N of an aixACCT export");
   info_command->add_option("--band-fraction", info->band_fraction,
@@ -135,6 +164,8 @@ Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
   info_command->footer(R"(Example:
   hyst data info RMN_TRAP_SLOW.dat --table 6
   hyst data info RMN_TRAP_SLOW.dat --loop V+,P1     loop area, coercive and remanent values
+  hyst data info conventional_example.forc         FORC curves, fields, calibration points
+A MicroMag loop file's initial (virgin) curve is left out of the loop cycles.
 A column's reversals are its turning points that it leaves by more than the band; a cycle is
 one period: back to the first value, moving in the first direction.)");
   info_command->callback([info] { run_info(*info); });

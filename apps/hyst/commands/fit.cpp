@@ -13,9 +13,11 @@
 
 #include "../data_source.hpp"
 #include "commands.hpp"
+#include "fit_forc.hpp"
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/registry/forc_fit.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -43,6 +45,9 @@ struct FitOptions {
   bool detrend = false;
   std::string resample;
   double band = 0.0;
+  std::string forc;  //!< --forc FILE: the FORC route (fit_forc.hpp)
+  std::string drift = "none";
+  std::size_t hold_out_every = 0;
 };
 
 //! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
@@ -127,6 +132,22 @@ nlohmann::json metrics_json(const ErrorMetrics& metrics) {
 }
 
 void run(const FitOptions& options) {
+  if (!options.forc.empty()) {
+    if (options.table || !options.cycles.empty() || options.detrend || !options.resample.empty() ||
+        options.band != 0.0) {
+      throw Error(
+          "--forc: --table, --cycles, --detrend, --resample and --band prepare time records; a "
+          "FORC file's curves are fitted as measured (--drift corrects their drift)");
+    }
+    run_forc_fit({options.model, options.forc, options.out, options.report, options.drift,
+                  options.hold_out_every, fit_options(options)});
+    return;
+  }
+  if (options.data.empty() || options.input.empty() || options.output.empty()) {
+    throw Error(
+        "hyst fit needs --data, --input and --output (or, for the Preisach model, --forc FILE: "
+        "'hyst fit preisach --forc FILE --out m.json')");
+  }
   const auto& registry = ModelRegistry::builtin();
   const auto& entry = registry.find(options.model);
   if (!entry.can_fit()) {
@@ -270,13 +291,13 @@ void add_fit_command(CLI::App& app) {
   auto* command = app.add_subcommand(
       "fit", "Fit a model to measured input/output data and save it as a model file.");
   command->add_option("model", options->model, "Model name (see 'hyst models')")->required();
-  command
-      ->add_option("--data", options->data,
-                   "Measured data: CSV, MATLAB .mat, aixACCT export or MicroMag loop file")
-      ->required();
-  command->add_option("--input", options->input, "Input column (variable) of --data")->required();
-  command->add_option("--output", options->output, "Output column (variable) of --data")
-      ->required();
+  auto* data = command->add_option(
+      "--data", options->data,
+      "Measured data: CSV, MATLAB .mat, aixACCT export or MicroMag loop file (required unless "
+      "--forc)");
+  auto* input = command->add_option("--input", options->input, "Input column (variable) of --data");
+  auto* output =
+      command->add_option("--output", options->output, "Output column (variable) of --data");
   command->add_option("--out", options->out, "Model file to write (JSON; '-': standard output)")
       ->required();
   auto* fraction = command->add_option(
@@ -333,6 +354,28 @@ void add_fit_command(CLI::App& app) {
   command->add_option("--band", options->band,
                       "Hysteresis band for reversals and cycles [input units] (default: 2 % of "
                       "the input range)");
+  std::string forc_options;
+  for (const auto& option : forc_fit_options())
+    forc_options += fmt::format("\n  {}: {}", option.name, option.description);
+  auto* forc = command->add_option(
+      "--forc", options->forc,
+      "A MicroMag FORC file (Series 0015 or 0016): identify the Preisach model (model "
+      "'tabulated_preisach', a tabulated Everett function) from its first-order reversal "
+      "curves. Fit options (--option key=value):" +
+          forc_options);
+  command
+      ->add_option("--drift", options->drift,
+                   "With --forc: correct the moments for the drift of the calibration points: "
+                   "none, multiplicative (sensitivity) or additive (offset)")
+      ->capture_default_str()
+      ->needs(forc);
+  command
+      ->add_option("--hold-out-every", options->hold_out_every,
+                   "With --forc: hold out curves N, 2N, 3N, ... (N >= 2) and report how well "
+                   "they are predicted")
+      ->needs(forc);
+  for (auto* excluded : {data, input, output, fraction, validation})
+    forc->excludes(excluded);
   command->footer(R"(Examples:
   hyst fit pi --data d.csv --input v --output y --out m.json --validate-fraction 0.2
   hyst fit pi --data MeasurementData.mat --input Vplus_19kv --output Displacement_19kv \
@@ -341,6 +384,8 @@ void add_fit_command(CLI::App& app) {
       --option initial_state=periodic --out pzt.json --report pzt.txt
   hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output P1 \
       --detrend --resample input-grid:20 --out pzt.json
+  hyst fit preisach --forc conventional_example.forc --drift multiplicative \
+      --hold-out-every 4 --option intervals=32 --out forc.json --report forc.txt
 Preprocessing: --detrend, then --cycles, then --resample on --data. A --validation-data
 record gets the drift removal only (detrend (fit and validation); cycles and resampling are
 fit-only); with --validate-fraction the held-out part is the end of the prepared record. The

@@ -4,7 +4,9 @@
 //! (aixACCT summary and measurement tables, the one CSV table, or a MAT file's variables), each
 //! column's unit, length and range, the reversal points and cycles of each column with a
 //! hysteresis band of `band_fraction` x its range, and optionally the loop figures of every cycle
-//! of an (input, output) pair of columns (loop_metrics.hpp).
+//! of an (input, output) pair of columns (loop_metrics.hpp). A MicroMag loop file also shows its
+//! segments, the units of its columns and its initial (virgin) curve, which the loop cycles leave
+//! out (they start after it); a MicroMag FORC file shows its curves (ForcInfo) instead of tables.
 
 #include <cstddef>
 #include <filesystem>
@@ -45,11 +47,30 @@ struct TableInfo {
   std::vector<LoopMetrics> loops;  //!< one per cycle of the loop columns, when asked and present
 };
 
+//! The curves of a MicroMag FORC file (io/micromag_forc.hpp), as measured (no drift correction).
+struct ForcInfo {
+  std::string layout;  //!< "Series 0015" or "Series 0016"
+  std::size_t curves = 0;
+  std::size_t points = 0;              //!< of all curves, calibration points not counted
+  std::size_t calibration_points = 0;  //!< one before each curve, and a final one if present
+  std::size_t fewest_points = 0;       //!< of one curve
+  std::size_t most_points = 0;
+  double field_min = 0.0, field_max = 0.0;        //!< over every curve point
+  double reversal_min = 0.0, reversal_max = 0.0;  //!< of the reversal fields H_r (first points)
+  std::optional<double> calibration_field;        //!< HCal of the header
+  //! Range of the fields at which the calibration points were measured.
+  double calibration_field_min = 0.0, calibration_field_max = 0.0;
+  //! 100 (m_cal,last / m_cal,first - 1): how far the calibration moment drifted over the run.
+  double calibration_drift_percent = 0.0;
+  std::string field_unit, moment_unit;  //!< "" when unknown
+};
+
 struct RecordInfo {
   std::string file;
   std::string format;  //!< e.g. "CSV, 3 columns", "aixACCT export (PiezoResult), ..."
   double band_fraction = 0.02;
-  std::vector<TableInfo> tables;
+  std::vector<TableInfo> tables;  //!< none for a FORC file
+  std::optional<ForcInfo> forc;   //!< for a MicroMag FORC file
 };
 
 //! Reads the file (io::DataFile's rules for its kind) and describes it. Throws hyst::Error for an
@@ -60,7 +81,8 @@ RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOption
 //! {"file", "format", "band_fraction", "tables": [{"table", "metadata"?, "columns": [{"name",
 //! "unit", "samples", "problem"? | "min", "max", "reversals", "cycles"}], "loops"?: [{"first",
 //! "last", "area", "closure_error", "input_mismatch", "coercive_inputs", "remanent_outputs"}]}]}
-//! where counts are null when not defined and crossings are {"value", "index", "direction"}.
+//! where counts are null when not defined and crossings are {"value", "index", "direction"};
+//! for a FORC file "tables" is empty and "forc" holds ForcInfo by its member names.
 nlohmann::json record_info_json(const RecordInfo& info);
 
 }  // namespace hyst::data

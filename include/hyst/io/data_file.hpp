@@ -5,7 +5,8 @@
 // loop file (hyst/io/micromag_loop.hpp: "Field", "Moment", "Adjusted Moment", ...). A ".mat"
 // extension (any case) means a MAT file; other files are aixACCT exports or MicroMag loop files
 // when their text starts like one (io::looks_like_aixacct, io::looks_like_micromag_loop), CSV
-// otherwise.
+// otherwise. A MicroMag FORC file is refused with a pointer to 'hyst fit preisach --forc': its
+// curves, each measured after saturation, are not one input/output record.
 
 #include <cstddef>
 #include <filesystem>
@@ -63,6 +64,9 @@ class DataFile {
   std::size_t aixacct_table_ = 0;  //!< index into aixacct_->measurements
   std::vector<std::string> names_;
 };
+
+//! True for a ".mat" extension in any case (read as a MAT file).
+bool has_mat_extension(const std::filesystem::path& path);
 
 //! The aixACCT export in `path` when the file is one (by its content, see io::looks_like_aixacct),
 //! else nullopt (also for .mat files, which are not read). Throws hyst::Error when the file cannot

@@ -27,4 +27,10 @@ inline constexpr std::size_t kMaxMatVariableBytes = std::size_t{1} << 28;
 //! sizes): 10 000 000. The count is checked as a double before it becomes an integer.
 inline constexpr double kMaxDerivedSamples = 1e7;
 
+//! Most curves of one FORC file: 100 000 (measured runs have 50 to 1 000), and most data
+//! points of one FORC file: 10 000 000 (80 MB per column as doubles; measured runs have 5 000
+//! to 200 000). They bound what a file of kMaxInputBytes may make the reader allocate.
+inline constexpr std::size_t kMaxForcCurves = 100000;
+inline constexpr std::size_t kMaxForcPoints = 10000000;
+
 }  // namespace hyst::io::limits

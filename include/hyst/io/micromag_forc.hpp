@@ -1,10 +1,10 @@
 #pragma once
 //! \file
 //! Reader for first-order reversal curve (FORC) files of Princeton Measurements MicroMag 2900/3900
-//! magnetometers (AGM/VSM), format "MicroMag 2900/3900 Data File (Series 0015)", "First-order
-//! reversal curves", as exported by the instrument software.
+//! magnetometers (AGM/VSM), as exported by the instrument software, in both layouts; which one a
+//! file has is read from its header (a "NData = N" line: Series 0015), not from a flag.
 //!
-//! Layout (text, CRLF or LF line ends):
+//! Series 0015 (AGM) layout (text, CRLF or LF line ends):
 //!
 //!     MicroMag 2900/3900 Data File (Series 0015)      <- first line, identifies the format
 //!     First-order reversal curves                      <- title
@@ -20,23 +20,56 @@
 //!     ...
 //!     MicroMag 2900/3900 Data File ends                <- end marker
 //!
-//! Blocks separated by blank lines alternate: one drift-calibration measurement at HCal (near
-//! saturation), then one FORC; a trailing calibration block is allowed. Units follow "Units of
-//! measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 (cgs: Oe, emu). The reader checks the
-//! first line, that every data line is "field,moment" with two finite numbers (std::from_chars,
-//! locale independent, a leading '+' accepted), that calibration blocks have one point, that the
-//! point count equals NData when the header has it, and that the end marker is present (a
-//! truncated file fails). Errors throw hyst::Error naming the file and the 1-based line:
-//!     conventional_example.forc:57: 'x.2,+5e-7' is not 'field,moment' with two numbers
+//! Series 0016 (VSM) layout: the header of the Series 0016 loop files (micromag_loop.hpp):
+//! sections of "key   value" entries (key and value apart by 2+ blanks or a tab; "HCal",
+//! "NForc", "Number of data" ...), then column titles stacked over two or more lines above the
+//! data, with a units line whose "Am²" is written in Latin-1 (converted to UTF-8 here), and a
+//! third column "Normalized Moment":
+//!
+//!     MicroMag 2900/3900 Data File (Series 0016.002)
+//!     First-order reversal curves
+//!
+//!     INSTRUMENT
+//!     Configuration                   VSM
+//!     ...
+//!     HCal                           +500.0000E-03
+//!     Number of data                  1234
+//!
+//!                                  Normalized
+//!          Field         Moment      Moment
+//!           (T)          (Am²)         ( )
+//!     +5.000123E-01,+1.234567E-05,+1.000000E+00    <- calibration point
+//!
+//!     -1.000000E-01,-2.345678E-06,-1.900000E-01    <- FORC ...
+//!
+//! In both layouts the data are blocks apart by blank lines: one drift-calibration point measured
+//! at HCal (near saturation) before every curve, then the curve; a trailing calibration block is
+//! allowed. A calibration point may also open its curve's block (its field above the curve's
+//! first, reversal field: the field falls from HCal to H_r). Units follow the units line, else
+//! "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 (cgs: Oe, emu).
+//!
+//! The reader checks the first line, that every data row is comma-separated finite numbers
+//! (std::from_chars, locale independent, a leading '+' accepted; "field,moment" in Series 0015,
+//! 2 or more columns, the same in every row, in Series 0016), that a curve has its calibration
+//! point, that the point count equals NData / "Number of data" when the header has it (in Series
+//! 0016 the count with or without the calibration points), and that the end marker is present
+//! (a truncated file fails). Blank lines, CRLF line ends and extra header keys are fine. Errors
+//! throw hyst::Error naming the file and the 1-based line:
+//!     conventional_example.forc:57: 'x.2,+5e-7' is not 'field,moment' with two finite numbers
+//! Cost: at most limits::kMaxInputBytes read, limits::kMaxForcCurves curves and
+//! limits::kMaxForcPoints data points (hyst/io/limits.hpp); beyond them an error names the limit.
 //!
 //! Drift: the calibration moment m_cal drifts during a run (here by 1.3 % over 120 curves).
 //! correct_drift() rescales (multiplicative: sensitivity drift) or shifts (additive: offset
 //! drift) every moment by the drift interpolated linearly between the calibration measured before
 //! and after its curve, relative to the first calibration.
-//! Source of the format: the example file shipped with PmagPy
-//! (../shared/data/pmagpy_forc_micromag_agm, see its PROVENANCE.md). PmagPy's own forc_diagram.py
-//! reads such files by splitting at the maximum field and ignores the calibration points; this
-//! reader follows the block structure.
+//! Source of the formats: the example file shipped with PmagPy
+//! (../shared/data/pmagpy_forc_micromag_agm, see its PROVENANCE.md) for Series 0015; for Series
+//! 0016 the header of the Series 0016 loop files (../shared/data/hystlab_vsm_hysteresis_loops)
+//! and the description of VSM FORC files (the header keys FORC programs read: HCal, NForc,
+//! "Number of data"); tests/data/micromag/series_0016.forc is a small file built from them.
+//! PmagPy's own forc_diagram.py reads such files by splitting at the maximum field and ignores
+//! the calibration points; this reader follows the block structure.
 
 #include <cstddef>
 #include <filesystem>
@@ -48,20 +81,35 @@
 
 namespace hyst::io {
 
+//! Which header a FORC file has (see the file comment).
+enum class MicromagForcLayout : unsigned char {
+  series_0015,  //!< "key = value" / "key : value" header ending with "NData = N" (AGM)
+  series_0016,  //!< sections of "key   value" entries and stacked column titles (VSM)
+};
+
 struct MicromagForcFile {
   struct Curve {
     double calibration_field = 0.0;   //!< of the calibration point measured before the curve
     double calibration_moment = 0.0;  //!< [moment units]
     std::vector<double> field;        //!< field[0] is the reversal field H_r [field units]
     std::vector<double> moment;       //!< [moment units], same length
-    std::size_t first_line = 0;       //!< 1-based line of field[0] in the file
+    //! The columns after field and moment (columns[2...], e.g. "Normalized Moment"), each as
+    //! long as field; correct_drift() leaves them as measured.
+    std::vector<std::vector<double>> more_columns;
+    std::size_t first_line = 0;  //!< 1-based line of field[0] in the file
   };
 
   std::string source;  //!< file name as given (for messages)
   std::string format;  //!< the first line
   std::string title;   //!< the second line, e.g. "First-order reversal curves"
-  //! "key = value" and "key : value" header lines, trimmed, in file order.
+  MicromagForcLayout layout = MicromagForcLayout::series_0015;
+  //! Header entries, trimmed, in file order: "key = value" and "key : value" lines (Series
+  //! 0015), "key   value" lines (Series 0016; text converted from Latin-1 to UTF-8).
   std::vector<std::pair<std::string, std::string>> header;
+  //! Data column names ("Field", "Moment", "Normalized Moment") and units ("T", "A m²" or, from
+  //! a units line, "Am²"; "" when unknown), one each per column.
+  std::vector<std::string> columns;
+  std::vector<std::string> units;
   std::vector<Curve> curves;
   //! A calibration point after the last curve, if the file has one: {field, moment}.
   std::optional<std::pair<double, double>> final_calibration;
@@ -70,10 +118,14 @@ struct MicromagForcFile {
   std::optional<std::string> header_text(std::string_view key) const;
   //! A numeric header entry ("HCal" -> 0.2350512); nullopt if absent or not a number.
   std::optional<double> header_number(std::string_view key) const;
-  //! Number of data points of all curves.
+  //! Number of data points of all curves (calibration points not counted).
   std::size_t points() const;
+  //! Calibration points: one per curve and the final one.
+  std::size_t calibration_points() const { return curves.size() + (final_calibration ? 1 : 0); }
 };
 
+//! True when `text` starts like a MicroMag FORC file (its first two lines).
+bool looks_like_micromag_forc(std::string_view text);
 //! Parses the text of a FORC file; `source_name` prefixes error messages.
 MicromagForcFile parse_micromag_forc(std::string_view text, std::string_view source_name);
 //! Reads and parses a file; errors name the path as given ("cannot open ...", "file:line: ...").

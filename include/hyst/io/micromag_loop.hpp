@@ -33,7 +33,8 @@
 //! after the software's slope and offset correction. Columns are named from their title lines
 //! ("Field", "Moment", "Adjusted Moment", ...; "Column 3" when the titles cannot be matched).
 //! Units follow "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 (cgs: Oe,
-//! emu).
+//! emu); a units line under the titles ("(T)  (Am²)", the "²" a Latin-1 byte) gives them per
+//! column. Header text and units are converted from Latin-1 to UTF-8 where they are not UTF-8.
 //!
 //! The reader checks the first line and the title (a FORC file is pointed to
 //! read_micromag_forc()), that every data row has the same number of fields and that each is a
@@ -65,12 +66,21 @@ struct MicromagLoopFile {
   //! "key   value" header lines, trimmed, in file order (section names such as "INSTRUMENT" are
   //! not entries; a key used in two sections, e.g. "Averaging time", appears twice).
   std::vector<std::pair<std::string, std::string>> header;
-  std::size_t segments = 0;                 //!< rows of the segment table (0 without one)
-  std::vector<std::string> columns;         //!< data column names, unique, in file order
+  std::size_t segments = 0;          //!< rows of the segment table (0 without one)
+  std::vector<std::string> columns;  //!< data column names, unique, in file order
+  //! Unit of each column: from the units line under the titles ("T", "Am²"; Latin-1 converted to
+  //! UTF-8), else implied by "Units of measure" and the name ("Hybrid SI": Field T, Moment A m²);
+  //! "" when unknown.
+  std::vector<std::string> units;
   std::vector<std::vector<double>> values;  //!< values[j] belongs to columns[j]; equal lengths
   //! Index of the first point of each segment (the data's blank-line separated blocks); [0] = 0.
   std::vector<std::size_t> segment_starts;
   std::size_t first_data_line = 0;  //!< 1-based line of the first point
+  //! Points of the initial (virgin) curve at the start of the data, measured from the
+  //! demagnetised state when the header says "Initial magnetization? Yes": the first data block,
+  //! or (without blank lines) the points before the field first turns back. 0 without one. The
+  //! loop cycles start after it.
+  std::size_t initial_curve_points = 0;
 
   //! The text of the first header entry with this key, or nullopt.
   std::optional<std::string> header_text(std::string_view key) const;

@@ -1,0 +1,104 @@
+#include "hyst/registry/forc_fit.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "../detail/json_fields.hpp"
+#include "hyst/core/error.hpp"
+#include "tabulated_preisach_model.hpp"
+
+namespace hyst {
+
+std::vector<ParameterInfo> forc_fit_options() {
+  const PreisachForcFitOptions defaults;
+  return {
+      {"intervals", "whole number", "",
+       fmt::format("K: uniform table levels x_0 .. x_K, K(K+1)/2 cell weights ({})",
+                   defaults.intervals)},
+      {"lower", "number", "input units",
+       "lower end of the table (default: the lowest field of all curves)"},
+      {"upper", "number", "input units",
+       "upper end of the table (default: the largest field of all curves; set it to HSat when "
+       "relays may switch up above the largest measured field)"},
+      {"saturation", "string", "",
+       "where every curve starts: positive_saturation (magnetometers; default) or "
+       "negative_saturation"},
+      {"smoothness", "number", "", "Tikhonov weight on neighbouring cell weights (0)"},
+      {"fit_offset", "boolean", "", "fit the output offset (true)"},
+  };
+}
+
+PreisachForcFitOptions forc_fit_options_from_json(const nlohmann::json& options) {
+  detail::JsonFields fields(options, "fit options");
+  PreisachForcFitOptions result;
+  result.intervals = fields.count_or("intervals", result.intervals);
+  if (fields.has("lower")) result.lower = fields.number("lower");
+  if (fields.has("upper")) result.upper = fields.number("upper");
+  if (fields.has("saturation")) {
+    result.saturation = fields.parsed("saturation", preisach_initial_state_from_string);
+  }
+  result.smoothness = fields.number_or("smoothness", result.smoothness);
+  result.fit_offset = fields.boolean_or("fit_offset", result.fit_offset);
+  fields.finish();
+  return result;
+}
+
+std::vector<std::size_t> every_nth_curve(std::size_t curves, std::size_t n) {
+  if (n == 1) {
+    throw Error("holding out every 1st curve leaves none to fit; use N >= 2", "hold_out_every");
+  }
+  std::vector<std::size_t> indices;
+  if (n == 0) return indices;
+  for (std::size_t k = n - 1; k < curves; k += n)
+    indices.push_back(k);
+  return indices;
+}
+
+std::vector<ReversalCurve> reversal_curves(const io::MicromagForcFile& file) {
+  std::vector<ReversalCurve> curves;
+  curves.reserve(file.curves.size());
+  for (const auto& curve : file.curves)
+    curves.push_back({curve.field, curve.moment});
+  return curves;
+}
+
+ForcModelFit fit_forc_curves(std::span<const ReversalCurve> curves,
+                             const PreisachForcFitOptions& options) {
+  auto fit = fit_preisach_forcs(curves, options);
+  ForcModelFit result{detail::tabulated_preisach_model(fit.model), std::move(fit.report),
+                      options.held_out, options};
+  result.options.lower = fit.model.lower();
+  result.options.upper = fit.model.upper();
+  return result;
+}
+
+ForcModelFit fit_forc_file(const io::MicromagForcFile& file, const ForcFitRequest& request) {
+  auto options = forc_fit_options_from_json(request.options);
+  const auto corrected = io::correct_drift(file, request.drift);
+  const auto curves = reversal_curves(corrected);
+  options.held_out = every_nth_curve(curves.size(), request.hold_out_every);
+  if (request.hold_out_every > 0 && options.held_out.empty()) {
+    throw Error(fmt::format("{}: holding out every {}th curve holds out none of its {} curves",
+                            file.source, request.hold_out_every, curves.size()),
+                "hold_out_every");
+  }
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
+  for (const auto& curve : curves) {
+    const auto [low, high] = std::minmax_element(curve.input.begin(), curve.input.end());
+    lowest = std::min(lowest, *low);
+    highest = std::max(highest, *high);
+  }
+  if (!options.lower) options.lower = lowest;
+  if (!options.upper) options.upper = highest;
+  try {
+    return fit_forc_curves(curves, options);
+  } catch (const Error& error) {
+    throw Error(fmt::format("{}: {}", file.source, error.what()), error.field());
+  }
+}
+
+}  // namespace hyst
