@@ -14,11 +14,11 @@
 #include "../data_source.hpp"
 #include "commands.hpp"
 #include "fit_forc.hpp"
+#include "fitted_model_output.hpp"
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
 #include "hyst/registry/forc_fit.hpp"
-#include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst::cli {
@@ -122,13 +122,6 @@ std::string models_that_can_fit(const ModelRegistry& registry) {
     if (entry.can_fit()) list += (list.empty() ? "" : ", ") + entry.name;
   }
   return list.empty() ? "none" : list;
-}
-
-nlohmann::json metrics_json(const ErrorMetrics& metrics) {
-  return {{"samples", metrics.samples},
-          {"rmse", metrics.rmse},
-          {"nrmse_percent", metrics.nrmse_percent},
-          {"max_error", metrics.max_error}};
 }
 
 void run(const FitOptions& options) {
@@ -236,52 +229,8 @@ void run(const FitOptions& options) {
         fmt::format("fitting '{}' to {} failed: {}", entry.name, options.data, report.message));
   }
 
-  nlohmann::json info = {{"created_by", "hyst fit"},
-                         {"model", report.model},
-                         {"method", report.method},
-                         {"status", std::string(report.status())},
-                         {"termination", std::string(to_string(report.termination))},
-                         {"message", report.message},
-                         {"iterations", report.iterations},
-                         {"initial_cost", report.initial_cost},
-                         {"final_cost", report.final_cost},
-                         {"parameters", report.parameters},
-                         {"fit", metrics_json(report.fit)},
-                         {"seconds", report.seconds},
-                         {"data", data_info},
-                         {"options", fit_json}};
-  if (report.validation) info["validation"] = metrics_json(*report.validation);
-  if (!report.quality_note.empty()) info["simulation"] = report.quality_note;
-  if (!report.references.empty()) {
-    nlohmann::json references = nlohmann::json::array();
-    for (const auto& reference : report.references) {
-      references.push_back(
-          reference.validation
-              ? nlohmann::json{{"name", reference.name},
-                               {"validation", metrics_json(*reference.validation)}}
-              : nlohmann::json{{"name", reference.name}, {"error", reference.error}});
-    }
-    info["references"] = references;
-    if (const auto beats = report.beats_yardstick()) info["beats_yardstick"] = *beats;
-  }
-  if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
-
-  // The model file and its report are replaced together (see write_text_outputs()).
-  const std::string model_text = model_to_json(*outcome.model, info).dump(2) + "\n";
-  if (options.report.empty()) {
-    write_text_outputs({{options.out, model_text}});
-  } else {
-    write_text_outputs({{options.out, model_text}, {options.report, report.full()}});
-  }
-
-  auto* messages = message_stream(is_stdout(options.out) || is_stdout(options.report));
-  fmt::print(messages, "{}\n", report.brief());
-  fmt::print(messages, "wrote {}{}\n", options.out,
-             options.report.empty() ? "" : fmt::format(" and {}", options.report));
-  if (report.status() != "converged") {
-    warn(fmt::format("the fit is not converged ({}): {}", report.status(),
-                     report.quality_note.empty() ? report.message : report.quality_note));
-  }
+  write_fitted_model(*outcome.model, fit_info_json(report, data_info, fit_json), report,
+                     options.out, options.report);
 }
 
 }  // namespace

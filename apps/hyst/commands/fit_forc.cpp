@@ -3,19 +3,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "fitted_model_output.hpp"
 #include "hyst/io/micromag_forc.hpp"
 #include "hyst/registry/forc_fit.hpp"
-#include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
 namespace {
-
-nlohmann::json metrics_json(const ErrorMetrics& metrics) {
-  return {{"samples", metrics.samples},
-          {"rmse", metrics.rmse},
-          {"nrmse_percent", metrics.nrmse_percent},
-          {"max_error", metrics.max_error}};
-}
 
 std::string ordinal(std::size_t n) {
   const auto tens = n % 100;
@@ -80,37 +73,8 @@ void run_forc_fit(const ForcFitArguments& arguments) {
   options["lower"] = *fit.options.lower;
   options["upper"] = *fit.options.upper;
   options["intervals"] = fit.options.intervals;
-  nlohmann::json info = {{"created_by", "hyst fit"},
-                         {"model", report.model},
-                         {"method", report.method},
-                         {"status", std::string(report.status())},
-                         {"termination", std::string(to_string(report.termination))},
-                         {"message", report.message},
-                         {"iterations", report.iterations},
-                         {"initial_cost", report.initial_cost},
-                         {"final_cost", report.final_cost},
-                         {"parameters", report.parameters},
-                         {"fit", metrics_json(report.fit)},
-                         {"seconds", report.seconds},
-                         {"data", data},
-                         {"options", options},
-                         {"preprocessing", report.preprocessing}};
-  if (report.validation) info["validation"] = metrics_json(*report.validation);
-
-  const std::string model_text = model_to_json(*fit.model, info).dump(2) + "\n";
-  const std::string report_text = report.full();
-  if (arguments.report.empty()) {
-    write_text_outputs({{arguments.out, model_text}});
-  } else {
-    write_text_outputs({{arguments.out, model_text}, {arguments.report, report_text}});
-  }
-  auto* messages = message_stream(is_stdout(arguments.out) || is_stdout(arguments.report));
-  fmt::print(messages, "{}\n", report.brief());
-  fmt::print(messages, "wrote {}{}\n", arguments.out,
-             arguments.report.empty() ? "" : fmt::format(" and {}", arguments.report));
-  if (report.status() != "converged") {
-    warn(fmt::format("the fit is not converged ({}): {}", report.status(), report.message));
-  }
+  write_fitted_model(*fit.model, fit_info_json(report, data, options), report, arguments.out,
+                     arguments.report);
 }
 
 }  // namespace hyst::cli
