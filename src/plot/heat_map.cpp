@@ -76,18 +76,25 @@ std::string script_for(const HeatMap& map, const fs::path& output, detail::Image
   double low = 0.0;
   double high = 0.0;
   bool first = true;
-  // One filled rectangle per cell (xlow xhigh ylow yhigh z); blank cells are left out, so any
-  // grid, even a single cell, draws the same way.
+  // One filled rectangle per run of equal cells in a row (a piecewise constant map, such as a
+  // table drawn on a finer grid, gives few of them); blank cells are left out, so any grid, even
+  // a single cell, draws the same way.
   script += "$cells << EOD\n";
+  const std::size_t nx = map.x.size();
   for (std::size_t iy = 0; iy < map.y.size(); ++iy) {
-    for (std::size_t ix = 0; ix < map.x.size(); ++ix) {
-      const double z = map.z[iy * map.x.size() + ix];
-      if (std::isnan(z)) continue;
-      low = first ? z : std::min(low, z);
-      high = first ? z : std::max(high, z);
-      first = false;
-      script += fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", x_edge[ix], x_edge[ix + 1],
-                            y_edge[iy], y_edge[iy + 1], z);
+    for (std::size_t ix = 0; ix < nx;) {
+      const double z = map.z[iy * nx + ix];
+      std::size_t end = ix + 1;
+      while (end < nx && map.z[iy * nx + end] == z)
+        ++end;
+      if (!std::isnan(z)) {
+        low = first ? z : std::min(low, z);
+        high = first ? z : std::max(high, z);
+        first = false;
+        script += fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", x_edge[ix], x_edge[end],
+                              y_edge[iy], y_edge[iy + 1], z);
+      }
+      ix = end;
     }
   }
   script += "EOD\n";
@@ -101,7 +108,8 @@ std::string script_for(const HeatMap& map, const fs::path& output, detail::Image
   script +=
       "set palette defined (0 '#ffffff', 0.1 '#c6dbef', 0.3 '#3182bd', 0.55 '#31a354', "
       "0.75 '#fec44f', 1 '#d7301f')\n"
-      "set tics out\nset grid front\nunset key\n"
+      // A fixed right margin keeps the colour bar's label inside the image.
+      "set rmargin at screen 0.84\nset tics out\nset grid front\nunset key\n"
       "set style fill solid 1.0 noborder\n"
       "plot $cells using (($1+$2)/2):(($3+$4)/2):1:2:3:4:5 with boxxyerror fc palette\n"
       "unset output\n";
