@@ -22,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include "gnuplot_render.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/output_paths.hpp"
@@ -45,10 +46,7 @@ std::string series_name(const Figure& figure, std::size_t index) {
 }
 
 void validate(const Figure& figure) {
-  if (figure.width < 16 || figure.width > 20000 || figure.height < 16 || figure.height > 20000) {
-    throw Error(fmt::format("figure size {} x {} pixels must be within 16..20000 on both sides",
-                            figure.width, figure.height));
-  }
+  detail::check_size(figure.width, figure.height);
   if (figure.series.empty()) throw Error("figure has no series to plot");
   for (std::size_t s = 0; s < figure.series.size(); ++s) {
     const auto& series = figure.series[s];
@@ -77,22 +75,7 @@ void validate(const Figure& figure) {
   }
 }
 
-//! A gnuplot single-quoted string: '' stands for ', nothing else is special. Line breaks and
-//! other control characters would end the command, so they become spaces.
-std::string gnuplot_string(std::string_view text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      out += "''";
-    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  out += '\'';
-  return out;
-}
+using detail::gnuplot_string;
 
 std::string_view style_clause(Series::Style style) {
   switch (style) {
@@ -106,27 +89,10 @@ std::string_view style_clause(Series::Style style) {
   return "with lines lw 1.5";
 }
 
-enum class Format { png, svg };
+using Format = detail::ImageFormat;
 
 std::string script_for(const Figure& figure, const fs::path& output, Format format) {
-  std::string script;
-  const auto size = fmt::format("size {},{}", figure.width, figure.height);
-  if (format == Format::svg) {
-    script +=
-        fmt::format("set terminal svg noenhanced {} font 'sans,11' background rgb 'white'\n", size);
-  } else {
-    // pngcairo draws anti-aliased lines; the libgd `png` terminal is the fallback.
-    script += fmt::format(
-        "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
-        "  set terminal pngcairo noenhanced {0} font ',11'\n"
-        "}} else {{\n"
-        "  set terminal png noenhanced {0}\n"
-        "}}\n",
-        size);
-  }
-  // No file name: the image goes to standard output.
-  script += output.empty() ? std::string("set output\n")
-                           : fmt::format("set output {}\n", gnuplot_string(output.string()));
+  std::string script = detail::terminal_commands(figure.width, figure.height, format, output);
   if (!figure.title.empty()) script += fmt::format("set title {}\n", gnuplot_string(figure.title));
   if (!figure.x_label.empty())
     script += fmt::format("set xlabel {}\n", gnuplot_string(figure.x_label));
@@ -307,6 +273,51 @@ void check_folder(const fs::path& png) {
 
 }  // namespace
 
+std::string detail::gnuplot_string(std::string_view text) {
+  std::string out = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      out += "''";
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  out += '\'';
+  return out;
+}
+
+void detail::check_size(int width, int height) {
+  if (width < 16 || width > 20000 || height < 16 || height > 20000) {
+    throw Error(fmt::format("figure size {} x {} pixels must be within 16..20000 on both sides",
+                            width, height));
+  }
+}
+
+std::string detail::terminal_commands(int width, int height, ImageFormat format,
+                                      const fs::path& output) {
+  std::string script;
+  const auto size = fmt::format("size {},{}", width, height);
+  if (format == ImageFormat::svg) {
+    script +=
+        fmt::format("set terminal svg noenhanced {} font 'sans,11' background rgb 'white'\n", size);
+  } else {
+    // pngcairo draws anti-aliased lines; the libgd `png` terminal is the fallback.
+    script += fmt::format(
+        "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
+        "  set terminal pngcairo noenhanced {0} font ',11'\n"
+        "}} else {{\n"
+        "  set terminal png noenhanced {0}\n"
+        "}}\n",
+        size);
+  }
+  // No file name: the image goes to standard output.
+  script += output.empty() ? std::string("set output\n")
+                           : fmt::format("set output {}\n", gnuplot_string(output.string()));
+  return script;
+}
+
 bool gnuplot_available() {
   try {
     return wait_for(spawn_gnuplot({"--version"}, -1, -1, -1)) == 0;
@@ -317,12 +328,10 @@ bool gnuplot_available() {
 
 namespace {
 
-//! Runs gnuplot on the figure's script, the image going to `output` (a file) or, when it is
-//! empty, to `stdout_fd`. `shown` names the destination in messages.
-void render(const Figure& figure, Format format, const fs::path& output, int stdout_fd,
+//! Runs gnuplot on the script, the image going to `output` (a file the script names) or, when
+//! it is empty, to `stdout_fd`. `shown` names the destination in messages.
+void render(const std::string& script, const fs::path& output, int stdout_fd,
             const fs::path& shown) {
-  const std::string script = script_for(figure, output, format);
-
   // gnuplot's standard error goes to an anonymous temporary file (read after it exits, so a
   // chatty gnuplot can never block on a full pipe while we are still writing the script).
   const std::unique_ptr<std::FILE, FileCloser> errors(std::tmpfile());
@@ -367,10 +376,13 @@ void render(const Figure& figure, Format format, const fs::path& output, int std
   }
 }
 
-//! Renders the figure into `png` (an image file of the format). A link is followed and its
-//! target replaced atomically; a device or FIFO is written through (hyst/io/output_paths.hpp).
-void write_image(const Figure& figure, const fs::path& png, Format format) {
-  validate(figure);
+}  // namespace
+
+//! Renders script(temporary) into `png` (an image file of the format). A link is followed and
+//! its target replaced atomically; a device or FIFO is written through
+//! (hyst/io/output_paths.hpp).
+void detail::write_image(const std::function<std::string(const fs::path& output)>& script,
+                         const fs::path& png, ImageFormat format) {
   check_folder(png);
   const io::OutputTarget target = io::resolve_output(png);
 
@@ -380,7 +392,7 @@ void write_image(const Figure& figure, const fs::path& png, Format format) {
   const fs::path temporary = temporary_path_for(
       special ? fs::temp_directory_path() / target.path.filename() : target.path, format);
   RemoveOnExit remove_temporary(temporary);
-  render(figure, format, temporary, -1, png);
+  render(script(temporary), temporary, -1, png);
 
   if (special) {
     io::write_file_atomically(target.path, io::read_file(temporary));
@@ -395,14 +407,18 @@ void write_image(const Figure& figure, const fs::path& png, Format format) {
   remove_temporary.release();
 }
 
-}  // namespace
-
 void write_png(const Figure& figure, const fs::path& png) {
-  write_image(figure, png, Format::png);
+  validate(figure);
+  detail::write_image(
+      [&](const fs::path& output) { return script_for(figure, output, Format::png); }, png,
+      Format::png);
 }
 
 void write_svg(const Figure& figure, const fs::path& svg) {
-  write_image(figure, svg, Format::svg);
+  validate(figure);
+  detail::write_image(
+      [&](const fs::path& output) { return script_for(figure, output, Format::svg); }, svg,
+      Format::svg);
 }
 
 std::string svg_element(const Figure& figure) {
@@ -411,7 +427,7 @@ std::string svg_element(const Figure& figure) {
   const std::unique_ptr<std::FILE, FileCloser> image(std::tmpfile());
   if (!image) throw Error(fmt::format("cannot render an SVG: {}", reason(errno)));
   ::fcntl(::fileno(image.get()), F_SETFD, FD_CLOEXEC);
-  render(figure, Format::svg, {}, ::fileno(image.get()), "(SVG element)");
+  render(script_for(figure, {}, Format::svg), {}, ::fileno(image.get()), "(SVG element)");
   std::rewind(image.get());
   std::string text;
   char buffer[65536];
