@@ -27,8 +27,9 @@ std::vector<const ModelEntry*> force_entries() {
     const auto& alternatives = entry->actuator_force->alternatives;
     return *std::min_element(alternatives.begin(), alternatives.end());
   };
-  std::stable_sort(entries.begin(), entries.end(),
-                   [&](const ModelEntry* a, const ModelEntry* b) { return first(a) < first(b); });
+  // Every alternative belongs to one entry, so no two entries tie and a plain sort is stable.
+  std::sort(entries.begin(), entries.end(),
+            [&](const ModelEntry* a, const ModelEntry* b) { return first(a) < first(b); });
   return entries;
 }
 
