@@ -420,6 +420,12 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
       best_summary.message);
   report.iterations = iterations;
   report.parameters = kGpiParameterCount - 1;
+  if (std::count(at_bound.begin(), at_bound.end(), true) ==
+      static_cast<std::ptrdiff_t>(report.parameters)) {
+    report.take_verdict(FitQuality::degenerate,
+                        "every fitted parameter ended at a bound of its range: the data do not "
+                        "determine them within it");
+  }
   report.initial_cost = start_costs[best];
   report.final_cost = 0.0;
   for (std::size_t k = 0; k < all_output.size(); ++k) {

@@ -74,6 +74,25 @@ std::string_view FitReport::status() const {
   }
 }
 
+void FitReport::take_verdict(FitQuality verdict, std::string note) {
+  const auto gravity = [](FitQuality q) {
+    switch (q) {
+      case FitQuality::unstable:
+        return 3;
+      case FitQuality::degenerate:
+        return 2;
+      case FitQuality::sound:
+        return 1;
+      case FitQuality::unchecked:
+        return 0;
+    }
+    return 0;
+  };
+  if (gravity(verdict) < gravity(quality)) return;
+  quality = verdict;
+  quality_note = std::move(note);
+}
+
 std::optional<bool> FitReport::beats_yardstick() const {
   const auto* best = best_reference();
   if (best == nullptr || !validation) return std::nullopt;

@@ -50,18 +50,16 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
     outcome.model->clone()->simulate(records.input, simulated);
   } catch (const Error& error) {
     // An output that overflows or runs away on the fit record's own input.
-    report.quality = FitQuality::unstable;
-    report.quality_note = error.what();
+    report.take_verdict(FitQuality::unstable, error.what());
     simulated.clear();
   }
   try {
     if (!simulated.empty()) {
       const auto verdict = judge_simulation(records.output, simulated, held_begin);
-      report.quality = verdict.quality;
-      report.quality_note = verdict.reason;
+      report.take_verdict(verdict.quality, verdict.reason);
     }
   } catch (const std::exception&) {
-    report.quality = FitQuality::unchecked;  // e.g. a record too short to judge
+    report.take_verdict(FitQuality::unchecked, "");  // e.g. a record too short to judge
   }
   try {
     // The samples of a resampled record are not in time order: no ARX there.

@@ -1,4 +1,5 @@
-// The global stage of the multistart engine (src/identify/detail/global_stage.hpp) on a cost with
+// The multistart engine (src/identify/detail/multistart_fit.hpp): its report, and its global
+// stage (global_stage.hpp) on a cost with
 // many valleys: cost(q) = ((q - 4)^2 + 9 cos^2(2 q)) / 2 on [-5, 10]. Its valleys lie near the
 // zeros of cos(2 q), q = pi/4 + k pi/2, and the deepest is the one closest to 4 (3 pi/4 + pi/2 =
 // 3.93). Levenberg-Marquardt from q = 0.7 ends in the valley near pi/4; the global stage finds the
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,41 @@ TEST(GlobalStage, KeepsFixedParametersAtTheirStart) {
   o.fixed = {0};
   const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, o, "test");
   EXPECT_EQ(result.q[0], 0.7);
+}
+
+// cost(q) = q^2 / 2 on [1, 5]: the minimum is the lower bound, which the report calls degenerate.
+struct Square {
+  template <class T>
+  bool operator()(const T* q, T* residuals) const {
+    residuals[0] = q[0];
+    return true;
+  }
+  std::size_t residuals() const { return 1; }
+};
+
+TEST(MultistartReport, EveryParameterAtABoundIsDegenerate) {
+  hyst::detail::MultistartOptions<1> o;
+  o.lower = {1.0};
+  o.upper = {5.0};
+  const auto result = hyst::detail::multistart_fit(Square{}, {{3.0}}, o, "test");
+  EXPECT_DOUBLE_EQ(result.q[0], 1.0);
+  EXPECT_TRUE(result.at_bound[0]);
+  const auto report = hyst::detail::report_of(result, 1.0, 1, "test", "lm");
+  EXPECT_EQ(report.status(), "degenerate");
+  EXPECT_NE(report.quality_note.find("ended at a bound"), std::string::npos);
+  // A sound simulation does not overrule the fitter's verdict; an unstable one does.
+  auto judged = report;
+  judged.take_verdict(hyst::FitQuality::sound, "");
+  EXPECT_EQ(judged.status(), "degenerate");
+  judged.take_verdict(hyst::FitQuality::unstable, "runs away");
+  EXPECT_EQ(judged.status(), "unstable");
+}
+
+TEST(MultistartReport, AnInteriorMinimumIsNotDegenerate) {
+  hyst::detail::MultistartOptions<1> o = options(0);
+  const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, o, "test");
+  const auto report = hyst::detail::report_of(result, 1.0, 1, "test", "lm");
+  EXPECT_EQ(report.status(), "converged");
 }
 
 }  // namespace

@@ -75,6 +75,10 @@ struct FitReport {
   //! The reference predictors scored on the held-out part (empty without one).
   std::vector<ReferenceScore> references;
 
+  //! Takes a judgement (fit_quality.hpp) unless the report holds a graver one already (unstable
+  //! over degenerate over sound over unchecked): the fitter's own verdict, e.g. that every fitted
+  //! parameter ended at a bound of its range, stands when the simulation looks sound.
+  void take_verdict(FitQuality verdict, std::string note);
   //! The one word on how the fit ended: "failed", "unstable", "degenerate" (from `quality`),
   //! else "iteration limit", "no progress" or "converged" (from `termination`).
   std::string_view status() const;

@@ -12,6 +12,7 @@
 // Parameters listed in `fixed` are held at their start value.
 // Convergence: the tests of convergence.hpp, the same for every Ceres-based fitter.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -51,7 +52,7 @@ struct MultistartResult {
   std::size_t best_start = 0;
   double initial_cost = 0.0;  // cost of the best start before it was iterated
   double final_cost = 0.0;
-  std::array<bool, N> at_bound{};
+  std::array<bool, N> at_bound{};  // free parameters within 1e-6 of a bound (held ones: false)
 };
 
 inline Termination termination_of_ceres(const ceres::Solver::Summary& summary) {
@@ -196,9 +197,11 @@ MultistartResult<N> multistart_fit(const Functor& functor,
   result.message = best_summary.message;
   result.final_cost = best_summary.final_cost;
   for (std::size_t i = 0; i < N; ++i) {
+    const bool held = std::find(options.fixed.begin(), options.fixed.end(), static_cast<int>(i)) !=
+                      options.fixed.end();
     const double width = options.upper[i] - options.lower[i];
-    result.at_bound[i] = result.q[i] - options.lower[i] <= 1e-6 * width ||
-                         options.upper[i] - result.q[i] <= 1e-6 * width;
+    result.at_bound[i] = !held && (result.q[i] - options.lower[i] <= 1e-6 * width ||
+                                   options.upper[i] - result.q[i] <= 1e-6 * width);
   }
   return result;
 }
@@ -231,6 +234,16 @@ FitReport report_of(const MultistartResult<N>& result, double residual_scale,
   report.initial_cost = result.initial_cost * residual_scale * residual_scale;
   report.final_cost = result.final_cost * residual_scale * residual_scale;
   report.parameters = parameters;
+  std::size_t at_bound = 0;
+  for (bool b : result.at_bound)
+    at_bound += b ? 1 : 0;
+  if (parameters > 0 && at_bound >= parameters) {
+    report.take_verdict(
+        FitQuality::degenerate,
+        fmt::format("every one of the {} fitted parameters ended at a bound of its range: the "
+                    "data do not determine them within it",
+                    parameters));
+  }
   return report;
 }
 
