@@ -23,8 +23,6 @@
 namespace hyst::python {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // A state handed in from Python may belong to another model; the C++ step trusts its size.
 void check_state(const auto&, const auto&) {}
 void check_state(const PrandtlIshlinskii& model, const PrandtlIshlinskii::State& state) {

@@ -20,8 +20,6 @@
 namespace hyst::python {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 const ModelRegistry& registry() {
   return ModelRegistry::builtin();
 }

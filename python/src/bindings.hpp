@@ -2,6 +2,7 @@
 // Shared helpers of the Python module `hyst`: numpy conversion without copies where possible,
 // JSON <-> Python objects, and one bind_* function per area of the library.
 
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -17,6 +18,9 @@ namespace hyst::python {
 
 namespace py = pybind11;
 using namespace pybind11::literals;
+
+//! The default of unbounded keyword arguments (input_min, output_max...).
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 //! Any 1-D sequence of numbers: a float64 C-contiguous numpy array is used in place, anything
 //! else (lists, other dtypes, strided views) is converted once by numpy.

@@ -100,17 +100,17 @@ py::object json_to_python(const nlohmann::json& value) {
 
 namespace {
 
-nlohmann::json python_to_json(py::handle value, const std::string& path, std::size_t depth);
+nlohmann::json json_at_depth(py::handle value, const std::string& path, std::size_t depth);
 
 }  // namespace
 
 nlohmann::json python_to_json(py::handle value, const std::string& path) {
-  return python_to_json(value, path, 0);
+  return json_at_depth(value, path, 0);
 }
 
 namespace {
 
-nlohmann::json python_to_json(py::handle value, const std::string& path, std::size_t depth) {
+nlohmann::json json_at_depth(py::handle value, const std::string& path, std::size_t depth) {
   if (value.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::int_>(value)) {
@@ -123,7 +123,7 @@ nlohmann::json python_to_json(py::handle value, const std::string& path, std::si
   if (py::isinstance<py::float_>(value)) return value.cast<double>();
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (py::isinstance<py::array>(value)) {
-    return python_to_json(value.attr("tolist")(), path, depth);
+    return json_at_depth(value.attr("tolist")(), path, depth);
   }
   const bool container = py::isinstance<py::dict>(value) || py::isinstance<py::list>(value) ||
                          py::isinstance<py::tuple>(value);
@@ -141,7 +141,7 @@ nlohmann::json python_to_json(py::handle value, const std::string& path, std::si
                                 py::repr(key).cast<std::string>()));
       }
       const auto name = key.cast<std::string>();
-      object[name] = python_to_json(item, path.empty() ? name : path + "." + name, depth + 1);
+      object[name] = json_at_depth(item, path.empty() ? name : path + "." + name, depth + 1);
     }
     return object;
   }
@@ -149,11 +149,11 @@ nlohmann::json python_to_json(py::handle value, const std::string& path, std::si
     auto array = nlohmann::json::array();
     std::size_t index = 0;
     for (const auto& item : value)
-      array.push_back(python_to_json(item, fmt::format("{}[{}]", path, index++), depth + 1));
+      array.push_back(json_at_depth(item, fmt::format("{}[{}]", path, index++), depth + 1));
     return array;
   }
   if (py::isinstance(value, py::module_::import("numpy").attr("generic"))) {
-    return python_to_json(value.attr("item")(), path, depth);  // numpy scalar
+    return json_at_depth(value.attr("item")(), path, depth);  // numpy scalar
   }
   throw Error(fmt::format("{}: a {} cannot be stored as JSON", path.empty() ? "<value>" : path,
                           py::type::of(value).attr("__name__").cast<std::string>()));

@@ -56,7 +56,7 @@ void require_invertible(const H& model, const std::string& params_path) {
   if constexpr (requires { model.is_invertible(); }) {
     if (model.is_invertible()) return;
     try {
-      InverseModel<H>::make(model, 0.0, 1.0);
+      ForceInverse<H>::make(model, 0.0, 1.0);
     } catch (const Error& error) {
       detail::rethrow_at(error, params_path);
     }

@@ -11,7 +11,7 @@
 namespace hyst::detail {
 namespace {
 
-constexpr std::string_view kHeader =
+constexpr std::string_view kBoucWenHeader =
     R"(/* Parameters (standard form): A, beta, gamma, exponent n, stiffness k, alpha_k. */
 typedef struct {
   @_real a;
@@ -100,7 +100,7 @@ static @_real @_advance(const @_params *params, @_real z, @_real dx) {
 
 )";
 
-constexpr std::string_view kFunctions = R"(void @_init(@_state *state) {
+constexpr std::string_view kBoucWenFunctions = R"(void @_init(@_state *state) {
   state->input = %INPUT%;
   state->z = %Z%;
 }
@@ -147,9 +147,10 @@ CModelCode emit_c(const BoucWen& bouc_wen, const BoucWen::State& state, const CW
             : fmt::format("classical RK4 with max({}, ceil(|dx| / {})) equal steps per sample, "
                           "at most 1000000",
                           p.substeps, writer.number(max_step)));
-  code.header = CWriter::fill(kHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}}) +
-                c_model_declarations("x = 0, z = 0",
-                                     "input linear between samples; advances z and returns F.");
+  code.header =
+      CWriter::fill(kBoucWenHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}}) +
+      c_model_declarations("x = 0, z = 0",
+                           "input linear between samples; advances z and returns F.");
   const std::string rk4_values =
       exact ? "" : fmt::format(",\n    {}u, {}", p.substeps, writer.number(max_step));
   code.source = (exact ? std::string(kExactAdvance)
@@ -158,8 +159,8 @@ CModelCode emit_c(const BoucWen& bouc_wen, const BoucWen::State& state, const CW
                             writer.number(p.a), writer.number(p.beta), writer.number(p.gamma),
                             writer.number(p.n), writer.number(p.stiffness),
                             writer.number(p.alpha_k), rk4_values) +
-                CWriter::fill(kFunctions, {{"INPUT", writer.number(state.input)},
-                                           {"Z", writer.number(state.hysteretic)}});
+                CWriter::fill(kBoucWenFunctions, {{"INPUT", writer.number(state.input)},
+                                                  {"Z", writer.number(state.hysteretic)}});
   return code;
 }
 

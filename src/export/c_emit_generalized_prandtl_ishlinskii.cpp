@@ -67,7 +67,7 @@ double saturation_limit(EnvelopeKind kind, bool single) {
   return kind == EnvelopeKind::arctan ? (1.0 - margin) * std::numbers::pi / 2 : 1.0 - margin;
 }
 
-constexpr std::string_view kHeader = R"(#define @_OPERATORS %N%
+constexpr std::string_view kGpiHeader = R"(#define @_OPERATORS %N%
 #define @_COEFFICIENTS %K%
 
 /* Parameters: the ascending envelope gamma_l and the descending one gamma_r (%KIND%,
@@ -103,7 +103,7 @@ typedef struct {
 } @_inverse_state;
 %INVERSE_DECLARATIONS%)";
 
-constexpr std::string_view kFunctions = R"(
+constexpr std::string_view kGpiFunctions = R"(
 void @_init(@_state *state) {
   unsigned int j;
   for (j = 0; j < @_OPERATORS; ++j) state->play[j] = @_PLAY_INIT[j];
@@ -186,13 +186,13 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
       " * while it falls (include/hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = true;
   code.header = CWriter::fill(
-      kHeader, {{"N", std::to_string(gpi.size())},
-                {"K", std::to_string(E::coefficient_count)},
-                {"KIND", std::string(to_string(params.envelope))},
-                {"MODEL_DECLARATIONS",
-                 c_model_declarations("at rest at its initial input, arrived rising",
-                                      "both envelopes, every operator, the weighted sum.")},
-                {"INVERSE_DECLARATIONS", c_inverse_declarations("")}});
+      kGpiHeader, {{"N", std::to_string(gpi.size())},
+                   {"K", std::to_string(E::coefficient_count)},
+                   {"KIND", std::string(to_string(params.envelope))},
+                   {"MODEL_DECLARATIONS",
+                    c_model_declarations("at rest at its initial input, arrived rising",
+                                         "both envelopes, every operator, the weighted sum.")},
+                   {"INVERSE_DECLARATIONS", c_inverse_declarations("")}});
   const std::string saturation =
       params.envelope == EnvelopeKind::linear
           ? std::string()
@@ -229,7 +229,7 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
            {"URESET", writer.number(inverse_reset.u)},
            {"DINIT", inverse_init.branch == LoopBranch::ascending ? "1" : "0"},
            {"DRESET", inverse_reset.branch == LoopBranch::ascending ? "1" : "0"}}) +
-      std::string(kFunctions);
+      std::string(kGpiFunctions);
   return code;
 }
 

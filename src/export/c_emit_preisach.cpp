@@ -15,7 +15,7 @@
 namespace hyst::detail {
 namespace {
 
-constexpr std::string_view kHeader = R"(#define @_LEVELS %N%
+constexpr std::string_view kPreisachHeader = R"(#define @_LEVELS %N%
 #define @_TABLE_SIZE %TABLE%
 /* Memory capacity: at most @_MAX_PAIRS (maximum, minimum) pairs after x_0. A new extremum that
    finds the memory full first drops the innermost stored pair (the two most recent extrema) and
@@ -400,15 +400,16 @@ CModelCode emit_c(const Preisach& preisach, const PreisachState& state, const CW
       " * (include/hyst/inverse/inverse_preisach.hpp, bracketed_search.hpp).\n";
   code.has_inverse = true;
   code.header = CWriter::fill(
-      kHeader, {{"N", std::to_string(n)},
-                {"TABLE", std::to_string(table.size())},
-                {"PAIRS", std::to_string(PreisachState::max_pairs)},
-                {"MODEL_DECLARATIONS",
-                 c_model_declarations(to_string(preisach.params().initial_state),
-                                      "updates the memory and returns y; O(1) + O(wiped pairs).")},
-                {"INVERSE_DECLARATIONS",
-                 c_inverse_declarations(" (bracketed search on the model's output one step "
-                                        "ahead, Chandrupatla's method)")}});
+      kPreisachHeader,
+      {{"N", std::to_string(n)},
+       {"TABLE", std::to_string(table.size())},
+       {"PAIRS", std::to_string(PreisachState::max_pairs)},
+       {"MODEL_DECLARATIONS",
+        c_model_declarations(to_string(preisach.params().initial_state),
+                             "updates the memory and returns y; O(1) + O(wiped pairs).")},
+       {"INVERSE_DECLARATIONS",
+        c_inverse_declarations(" (bracketed search on the model's output one step "
+                               "ahead, Chandrupatla's method)")}});
   code.source = fmt::format(
       "const @_params @_PARAMS = {{\n    {},\n    {},\n    {},\n    {}, {}, {}, {}, {}}};\n\n",
       writer.table(levels), writer.table(diagonal), writer.table(table),

@@ -61,8 +61,7 @@ ComparedModel compare_one(const ModelEntry& entry, std::span<const double> input
     model->simulate(input, row.simulated);
     // The free run judged where the ranking is made: on the held-out part.
     const auto verdict = judge_simulation(output, row.simulated, split.validation_begin);
-    row.report->quality = verdict.quality;
-    row.report->quality_note = verdict.reason;
+    row.report->take_verdict(verdict.quality, verdict.reason);
     if (!std::all_of(row.simulated.begin(), row.simulated.end(),
                      [](double y) { return std::isfinite(y); })) {
       throw Error(fmt::format("unstable: {}", verdict.reason));
@@ -89,9 +88,7 @@ std::string status_of(const ComparedModel& row) {
   return std::string(row.report->status());
 }
 
-std::string_view yes_no(bool value) {
-  return value ? "yes" : "no";
-}
+using detail::yes_no;
 
 const ComparedModel* best_model(const ModelComparison& comparison) {
   const bool any = !comparison.ranking.empty() && comparison.ranking.front().ok;

@@ -282,9 +282,7 @@ const CrossRecordReference* best_cross_record_reference(const CrossRecordCompari
 
 namespace {
 
-std::string_view yes_no(bool value) {
-  return value ? "yes" : "no";
-}
+using detail::yes_no;
 
 std::string no_fit_lines(const CrossRecordComparison& comparison) {
   std::string text;

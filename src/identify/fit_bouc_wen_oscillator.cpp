@@ -15,18 +15,18 @@
 namespace hyst {
 namespace {
 
-constexpr std::size_t kParameters = 7;  // m, c, k, alpha, beta gamma, beta delta, nu
+constexpr std::size_t kOscillatorParameters = 7;  // m, c, k, alpha, beta gamma, beta delta, nu
 constexpr int kNu = 6;
-using Vector = std::array<double, kParameters>;
+using OscillatorVector = std::array<double, kOscillatorParameters>;
 
-Vector physical_of(const BoucWenOscillator::Params& p) {
+OscillatorVector physical_of(const BoucWenOscillator::Params& p) {
   return {p.mass, p.damping, p.stiffness, p.alpha, p.beta * p.gamma, p.beta * p.delta, p.nu};
 }
 
 // Residuals of all records for scaled parameters q (physical = scale * q), divided by y_scale.
 class SimulationError {
  public:
-  SimulationError(std::span<const BoucWenOscillatorRecord> records, Vector scale,
+  SimulationError(std::span<const BoucWenOscillatorRecord> records, OscillatorVector scale,
                   double input_sample_time, std::size_t substeps, double y_scale)
       : records_(records.begin(), records.end()),
         scale_(scale),
@@ -65,7 +65,7 @@ class SimulationError {
 
  private:
   std::vector<BoucWenOscillatorRecord> records_;
-  Vector scale_;
+  OscillatorVector scale_;
   double dt_;
   std::size_t substeps_;
   double y_scale_;
@@ -183,15 +183,15 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
     BoucWenOscillator{start};  // validates
 
   // Scale: the first start's magnitudes; bounds in scaled units.
-  const Vector first = physical_of(starts.front());
-  Vector scale{};
-  for (std::size_t i = 0; i < kParameters; ++i)
+  const OscillatorVector first = physical_of(starts.front());
+  OscillatorVector scale{};
+  for (std::size_t i = 0; i < kOscillatorParameters; ++i)
     scale[i] = first[i] != 0.0 ? std::abs(first[i]) : 1.0;
   // beta gamma and beta delta share one scale, so that their sign can change freely.
   const double product_scale = std::max(std::abs(first[4]), std::abs(first[5]));
   scale[4] = scale[5] = product_scale > 0.0 ? product_scale : 1.0;
   scale[kNu] = 1.0;
-  detail::MultistartOptions<kParameters> ms;
+  detail::MultistartOptions<kOscillatorParameters> ms;
   ms.lower = {1e-3, 0.0, 0.0, 1e-3, -1e3, -1e3, 1.0};
   ms.upper = {1e3, 1e3 + 1e3 * (first[1] == 0.0), 1e2, 1e2, 1e3, 1e3, 4.0};
   if (!options.fit_nu) ms.fixed = {kNu};
@@ -199,7 +199,7 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;
-  std::vector<Vector> physical_starts;
+  std::vector<OscillatorVector> physical_starts;
   for (const auto& start : starts)
     physical_starts.push_back(physical_of(start));
   const auto q_starts = detail::scaled_starts(physical_starts, scale);

@@ -1,18 +1,12 @@
 #include "hyst/identify/fit_duhem.hpp"
 
 #include "detail/record_fit.hpp"
+#include "detail/scalar_value.hpp"
 
 namespace hyst {
 namespace {
 
-// The value of a parameter, without its derivatives (ceres::Jet's scalar part).
-double value_of(double x) {
-  return x;
-}
-template <class Jet>
-double value_of(const Jet& x) {
-  return x.a;
-}
+using detail::value_of;
 
 // q = (alpha, f_slope, f_sat, v_sat, r), physical = q * scale except r.
 struct DuhemKernel {

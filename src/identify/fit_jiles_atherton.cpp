@@ -8,18 +8,17 @@
 #include <fmt/format.h>
 
 #include "detail/multistart_fit.hpp"
+#include "detail/scalar_value.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
 
-constexpr std::size_t kParameters = 5;  // M_s, a, k, c, alpha
-using Vector = std::array<double, kParameters>;
+constexpr std::size_t kJaParameters = 5;  // M_s, a, k, c, alpha
+using JaVector = std::array<double, kJaParameters>;
 
-double value_of(double x) {
-  return x;
-}
+using detail::value_of;
 // Forward-mode derivatives for the simulation inside the fit: a value and its N partial
 // derivatives in a plain array, with only the operations the Jiles-Atherton integration uses, so
 // that the compiler inlines them (ceres::Jet's Eigen vectors of length 5 are not). The value part
@@ -134,12 +133,7 @@ template <int N>
   return x.a < y.a;
 }
 
-template <int N>
-double value_of(const Dual<N>& x) {
-  return x.a;
-}
-
-Vector physical_of(const JilesAtherton::Params& p) {
+JaVector physical_of(const JilesAtherton::Params& p) {
   return {p.ms, p.a, p.k, p.c, p.alpha};
 }
 
@@ -170,7 +164,7 @@ void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVarian
 
 class LoopError {
  public:
-  LoopError(std::span<const BhLoop> loops, Vector scale, JilesAthertonVariant variant,
+  LoopError(std::span<const BhLoop> loops, JaVector scale, JilesAthertonVariant variant,
             double max_step, double b_scale, bool periodic)
       : loops_(loops.begin(), loops.end()),
         scale_(scale),
@@ -192,9 +186,9 @@ class LoopError {
   // Jacobian: the simulation runs in Dual numbers and is copied into Ceres' Jets.
   template <int N>
   bool operator()(const ceres::Jet<double, N>* q, ceres::Jet<double, N>* residuals) const {
-    static_assert(N == static_cast<int>(kParameters));
-    std::array<Dual<N>, kParameters> x;
-    for (std::size_t i = 0; i < kParameters; ++i) {
+    static_assert(N == static_cast<int>(kJaParameters));
+    std::array<Dual<N>, kJaParameters> x;
+    for (std::size_t i = 0; i < kJaParameters; ++i) {
       x[i].a = q[i].a * scale_[i];
       for (int j = 0; j < N; ++j)
         x[i].v[static_cast<std::size_t>(j)] = q[i].v[j] * scale_[i];
@@ -230,7 +224,7 @@ class LoopError {
 
  private:
   std::vector<BhLoop> loops_;
-  Vector scale_;
+  JaVector scale_;
   JilesAthertonVariant variant_;
   double max_step_;
   double b_scale_;
@@ -354,16 +348,17 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
     start.variant = options.variant;
     JilesAtherton{start};  // validates
   }
-  const Vector first = physical_of(starts.front());
-  Vector scale{first[0], first[1], first[2], 1.0, first[4] > 0.0 ? first[4] : first[1] / first[0]};
-  detail::MultistartOptions<kParameters> ms;
+  const JaVector first = physical_of(starts.front());
+  JaVector scale{first[0], first[1], first[2], 1.0,
+                 first[4] > 0.0 ? first[4] : first[1] / first[0]};
+  detail::MultistartOptions<kJaParameters> ms;
   ms.lower = {0.1, 1e-3, 0.05, 0.0, 0.0};
   ms.upper = {10.0, 1e3, 1e3, 0.99, 1e3};
   ms.global_evaluations = options.global_evaluations;
   ms.screening_iterations = options.screening_iterations;
   ms.max_iterations = options.max_iterations;
   ms.function_tolerance = options.function_tolerance;
-  std::vector<Vector> physical_starts;
+  std::vector<JaVector> physical_starts;
   for (const auto& start : starts)
     physical_starts.push_back(physical_of(start));
   const auto q_starts = detail::scaled_starts(physical_starts, scale);
@@ -381,7 +376,7 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   JilesAtherton model(fitted);
 
   FitReport report =
-      detail::report_of(result, b_scale, kParameters, "jiles_atherton",
+      detail::report_of(result, b_scale, kJaParameters, "jiles_atherton",
                         "levenberg-marquardt (ceres, autodiff through RK4), steady-state loops");
   report.fit = error_metrics(concatenate_measured(loops),
                              concatenate_simulated(model, loops, options.periodic));

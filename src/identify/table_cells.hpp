@@ -1,10 +1,15 @@
 #pragma once
-// Free text in the cells of the comparison tables: one line, CSV quoting or Markdown escaping.
+// Cells of the comparison tables: yes/no, free text on one line with CSV quoting or Markdown
+// escaping.
 
 #include <string>
 #include <string_view>
 
 namespace hyst::detail {
+
+inline std::string_view yes_no(bool value) {
+  return value ? "yes" : "no";
+}
 
 inline std::string csv_quoted(std::string_view text) {
   std::string out = "\"";

@@ -22,12 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string reason(int error_number) {
-  return std::generic_category().message(error_number);
-}
-
 [[noreturn]] void fail_write(const fs::path& path, int error_number, std::string_view step) {
-  throw Error(fmt::format("cannot write '{}': {} ({})", path.string(), reason(error_number), step));
+  throw Error(
+      fmt::format("cannot write '{}': {} ({})", path.string(), errno_message(error_number), step));
 }
 
 //! A unique name in the target's folder: unique across processes (pid) and within one (counter).
@@ -191,7 +188,7 @@ std::string read_file(const fs::path& path) {
   errno = 0;
   const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
   if (!file) {
-    throw Error(fmt::format("cannot open '{}': {}", path.string(), reason(errno)));
+    throw Error(fmt::format("cannot open '{}': {}", path.string(), errno_message(errno)));
   }
   std::string content;
   char buffer[65536];
@@ -213,7 +210,7 @@ std::string read_file(const fs::path& path) {
     }
     if (count == sizeof buffer) continue;
     if (std::ferror(file.get())) {
-      throw Error(fmt::format("cannot read '{}': {}", path.string(), reason(error_number)));
+      throw Error(fmt::format("cannot read '{}': {}", path.string(), errno_message(error_number)));
     }
     return content;
   }

@@ -24,7 +24,7 @@ constexpr std::string_view kBlank = " \t";
 //! Separators in the order automatic detection prefers them; ' ' stands for runs of blanks.
 constexpr std::string_view kDetectionOrder = "\t;, ";
 
-std::string_view trim(std::string_view text) {
+std::string_view trim_blanks(std::string_view text) {
   const auto first = text.find_first_not_of(kBlank);
   if (first == std::string_view::npos) return {};
   const auto last = text.find_last_not_of(kBlank);
@@ -62,11 +62,11 @@ std::string describe_separator(char separator) {
 void split(std::string_view line, char separator, std::vector<std::string_view>& fields) {
   fields.clear();
   if (separator == ' ') {
-    std::string_view rest = trim(line);
+    std::string_view rest = trim_blanks(line);
     while (!rest.empty()) {
       const auto end = std::min(rest.find_first_of(kBlank), rest.size());
       fields.push_back(rest.substr(0, end));
-      rest = trim(rest.substr(end));
+      rest = trim_blanks(rest.substr(end));
     }
     return;
   }
@@ -74,10 +74,10 @@ void split(std::string_view line, char separator, std::vector<std::string_view>&
   while (true) {
     const auto end = line.find(separator, start);
     if (end == std::string_view::npos) {
-      fields.push_back(trim(line.substr(start)));
+      fields.push_back(trim_blanks(line.substr(start)));
       return;
     }
-    fields.push_back(trim(line.substr(start, end - start)));
+    fields.push_back(trim_blanks(line.substr(start, end - start)));
     start = end + 1;
   }
 }
@@ -121,7 +121,7 @@ double parse_number(std::string_view field, std::string_view source, std::size_t
 //! Rules for a column name that hold for every table: returns an error text or "".
 std::string name_problem(std::string_view name) {
   if (name.empty()) return "is empty";
-  if (trim(name).size() != name.size()) return "has leading or trailing spaces";
+  if (trim_blanks(name).size() != name.size()) return "has leading or trailing spaces";
   if (name.find_first_of("\r\n") != std::string_view::npos) return "contains a line break";
   // Written first in a file, it would be read as the file's byte order mark and dropped.
   if (name.starts_with(detail::kByteOrderMark)) return "starts with a byte order mark (U+FEFF)";
@@ -260,14 +260,15 @@ Table parse_csv(std::string_view text, std::string_view source_name,
   bool any_text = false;
   bool found_header = false;
   while (!found_header && reader.next(line)) {
-    any_text = any_text || !trim(line).empty();
-    found_header = !skipped(trim(line));
+    any_text = any_text || !trim_blanks(line).empty();
+    found_header = !skipped(trim_blanks(line));
   }
   if (!found_header) {
     throw Error(fmt::format("{}file is empty{}", prefix(source),
                             any_text ? " (it has only blank and comment lines)" : ""));
   }
-  const char separator = options.separator != 0 ? options.separator : detect_separator(trim(line));
+  const char separator =
+      options.separator != 0 ? options.separator : detect_separator(trim_blanks(line));
   const std::size_t header_line = reader.number();
 
   Table table;
@@ -294,7 +295,7 @@ Table parse_csv(std::string_view text, std::string_view source_name,
   table.columns.resize(table.names.size());
 
   while (reader.next(line)) {
-    if (skipped(trim(line))) continue;
+    if (skipped(trim_blanks(line))) continue;
     split(line, separator, fields);
     if (fields.size() != table.names.size()) {
       throw Error(fmt::format("{}row has {} fields but the header has {}",

@@ -19,7 +19,7 @@ using detail::location;
 using detail::parse_number;
 using detail::trim;
 
-std::vector<std::string_view> split_tabs(std::string_view line) {
+std::vector<std::string_view> tab_fields(std::string_view line) {
   return detail::split_fields(line, '\t');
 }
 
@@ -47,7 +47,7 @@ MagicTable parse_magic_table(std::string_view text, std::string_view source_name
   table.source = std::string(source_name);
   detail::LineReader lines(text);
   std::string_view line;
-  const auto kind = lines.next(line) ? split_tabs(line) : std::vector<std::string_view>{};
+  const auto kind = lines.next(line) ? tab_fields(line) : std::vector<std::string_view>{};
   if (kind.size() < 2 || !kind[0].starts_with("tab") || kind[1].empty()) {
     throw Error(fmt::format(
         "{}: not a MagIC table (the first line is '{}', expected 'tab', a tab and the table "
@@ -59,7 +59,7 @@ MagicTable parse_magic_table(std::string_view text, std::string_view source_name
     throw Error(fmt::format("{}: no column names after the table name",
                             location(source_name, lines.number())));
   }
-  for (const auto name : split_tabs(line)) {
+  for (const auto name : tab_fields(line)) {
     if (name.empty()) {
       throw Error(fmt::format("{}: column {} has no name", location(source_name, lines.number()),
                               table.columns.size() + 1));
@@ -73,7 +73,7 @@ MagicTable parse_magic_table(std::string_view text, std::string_view source_name
   while (lines.next(line)) {
     if (trim(line).empty()) continue;
     if (trim(line).starts_with(">>>>>")) break;  // the next table of a multi-table file
-    auto cells = split_tabs(line);
+    auto cells = tab_fields(line);
     while (cells.size() > table.columns.size() && cells.back().empty())
       cells.pop_back();
     if (cells.size() > table.columns.size()) {

@@ -40,14 +40,10 @@ struct VarFreer {
 using MatHandle = std::unique_ptr<mat_t, MatCloser>;
 using VarHandle = std::unique_ptr<matvar_t, VarFreer>;
 
-std::string reason(int error_number) {
-  return std::generic_category().message(error_number);
-}
-
 MatHandle open_for_reading(const fs::path& path) {
   // Tell "cannot open" from "not a MAT file": matio reports both as a null handle.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw Error(fmt::format("cannot open '{}': {}", path.string(), reason(errno)));
+  if (fd < 0) throw Error(fmt::format("cannot open '{}': {}", path.string(), errno_message(errno)));
   struct stat status {};
   const int stat_result = ::fstat(fd, &status);
   ::close(fd);
@@ -160,12 +156,12 @@ bool is_valid_matlab_name(std::string_view name) {
 }
 
 //! The reserved temporary file: removed on destruction unless committed.
-class TemporaryFile {
+class ReservedMatFile {
  public:
-  explicit TemporaryFile(fs::path path) : path_(std::move(path)) {}
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  ~TemporaryFile() {
+  explicit ReservedMatFile(fs::path path) : path_(std::move(path)) {}
+  ReservedMatFile(const ReservedMatFile&) = delete;
+  ReservedMatFile& operator=(const ReservedMatFile&) = delete;
+  ~ReservedMatFile() {
     if (!committed_) ::unlink(path_.c_str());
   }
   const fs::path& path() const { return path_; }
@@ -176,7 +172,7 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
-fs::path temporary_path_for(const fs::path& path) {
+fs::path reserved_mat_path(const fs::path& path) {
   static std::atomic<unsigned long long> counter{0};
   const std::string target = path.filename().string().substr(0, 200);
   return path.parent_path() / fmt::format(".{}.tmp.{}.{}", target,
@@ -338,16 +334,16 @@ void write_mat_vectors(const fs::path& path,
   const bool special = target.kind == OutputKind::special;
 
   // Reserve a unique temporary name (O_EXCL), then let matio write it.
-  const fs::path temporary_path = temporary_path_for(
-      special ? fs::temp_directory_path() / target.path.filename() : target.path);
+  const fs::path temporary_path =
+      reserved_mat_path(special ? fs::temp_directory_path() / target.path.filename() : target.path);
   const int reserved =
       ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (reserved < 0) {
-    fail_write(path, fmt::format("{} (creating the temporary file '{}')", reason(errno),
+    fail_write(path, fmt::format("{} (creating the temporary file '{}')", errno_message(errno),
                                  temporary_path.string()));
   }
   ::close(reserved);
-  TemporaryFile temporary(temporary_path);
+  ReservedMatFile temporary(temporary_path);
 
   {
     MatHandle mat(Mat_CreateVer(temporary.path().c_str(), nullptr,
@@ -381,7 +377,8 @@ void write_mat_vectors(const fs::path& path,
 
   // Flush to disk, keep the permission bits of a file being replaced, rename over the target.
   const int fd = ::open(temporary.path().c_str(), O_RDWR | O_CLOEXEC);
-  if (fd < 0) fail_write(path, fmt::format("{} (reopening the temporary file)", reason(errno)));
+  if (fd < 0)
+    fail_write(path, fmt::format("{} (reopening the temporary file)", errno_message(errno)));
   struct stat target_status {};
   if (::stat(target.path.c_str(), &target_status) == 0 && S_ISREG(target_status.st_mode)) {
     static_cast<void>(::fchmod(fd, target_status.st_mode & 07777));  // best effort
@@ -391,7 +388,8 @@ void write_mat_vectors(const fs::path& path,
   }
   const int sync_error = errno;
   ::close(fd);
-  if (sync_result != 0) fail_write(path, fmt::format("{} (flushing to disk)", reason(sync_error)));
+  if (sync_result != 0)
+    fail_write(path, fmt::format("{} (flushing to disk)", errno_message(sync_error)));
 
   std::error_code rename_error;
   fs::rename(temporary.path(), target.path, rename_error);

@@ -20,10 +20,6 @@ namespace fs = std::filesystem;
 // The limit of the Linux kernel for one path (MAXSYMLINKS).
 constexpr int kMaxLinks = 40;
 
-std::string reason(int error_number) {
-  return std::generic_category().message(error_number);
-}
-
 //! Resolves `path`; on failure returns why (a message without the path) and leaves `target`.
 std::string resolve(const fs::path& path, OutputTarget& target) {
   if (path.filename().empty() || path.filename() == "." || path.filename() == "..") {
@@ -33,7 +29,7 @@ std::string resolve(const fs::path& path, OutputTarget& target) {
   for (int links = 0; links <= kMaxLinks; ++links) {
     struct stat status {};
     if (::lstat(current.c_str(), &status) != 0) {
-      if (errno != ENOENT && errno != ENOTDIR) return reason(errno);
+      if (errno != ENOENT && errno != ENOTDIR) return errno_message(errno);
       const fs::path folder = current.parent_path().empty() ? fs::path(".") : current.parent_path();
       std::error_code error;
       const auto folder_status = fs::status(folder, error);

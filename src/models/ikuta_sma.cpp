@@ -8,7 +8,7 @@
 namespace hyst {
 namespace {
 
-void require_finite_field(double value, std::string_view field, std::string_view symbol) {
+void require_finite_parameter(double value, std::string_view field, std::string_view symbol) {
   if (!std::isfinite(value)) {
     throw Error(fmt::format("Ikuta {} {} = {} is not finite", field, symbol, value),
                 std::string(field));
@@ -16,13 +16,13 @@ void require_finite_field(double value, std::string_view field, std::string_view
 }
 
 void validate(const IkutaSma::Params& p) {
-  require_finite_field(p.martensite_finish, "martensite_finish", "M_f");
-  require_finite_field(p.martensite_start, "martensite_start", "M_s");
-  require_finite_field(p.austenite_start, "austenite_start", "A_s");
-  require_finite_field(p.austenite_finish, "austenite_finish", "A_f");
-  require_finite_field(p.output_austenite, "output_austenite", "y_A");
-  require_finite_field(p.output_martensite, "output_martensite", "y_M");
-  require_finite_field(p.initial_input, "initial_input", "v0");
+  require_finite_parameter(p.martensite_finish, "martensite_finish", "M_f");
+  require_finite_parameter(p.martensite_start, "martensite_start", "M_s");
+  require_finite_parameter(p.austenite_start, "austenite_start", "A_s");
+  require_finite_parameter(p.austenite_finish, "austenite_finish", "A_f");
+  require_finite_parameter(p.output_austenite, "output_austenite", "y_A");
+  require_finite_parameter(p.output_martensite, "output_martensite", "y_M");
+  require_finite_parameter(p.initial_input, "initial_input", "v0");
   if (!(p.martensite_start > p.martensite_finish)) {
     throw Error(fmt::format("Ikuta martensite_start M_s = {} must be > martensite_finish M_f = {}",
                             p.martensite_start, p.martensite_finish),

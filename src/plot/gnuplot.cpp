@@ -34,10 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string reason(int error_number) {
-  return std::generic_category().message(error_number);
-}
-
 //! The series as it appears in messages: "series 2 ('model')".
 std::string series_name(const Figure& figure, std::size_t index) {
   const auto& label = figure.series[index].label;
@@ -172,7 +168,7 @@ pid_t spawn_gnuplot(const std::vector<std::string>& args, int stdin_fd, int stdo
 
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
-  if (pid < 0) throw Error(fmt::format("cannot start gnuplot: {}", reason(errno)));
+  if (pid < 0) throw Error(fmt::format("cannot start gnuplot: {}", errno_message(errno)));
   if (pid == 0) {
     // Only async-signal-safe calls from here on (the parent may have other threads).
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -335,14 +331,14 @@ void render(const std::string& script, const fs::path& output, int stdout_fd,
   // gnuplot's standard error goes to an anonymous temporary file (read after it exits, so a
   // chatty gnuplot can never block on a full pipe while we are still writing the script).
   const std::unique_ptr<std::FILE, FileCloser> errors(std::tmpfile());
-  if (!errors) throw Error(fmt::format("cannot start gnuplot: {}", reason(errno)));
+  if (!errors) throw Error(fmt::format("cannot start gnuplot: {}", errno_message(errno)));
   ::fcntl(::fileno(errors.get()), F_SETFD, FD_CLOEXEC);
 
   // A socket pair rather than a pipe: send(MSG_NOSIGNAL) reports EPIPE if gnuplot exits early,
   // instead of killing this process with SIGPIPE.
   int sockets[2];
   if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets) != 0) {
-    throw Error(fmt::format("cannot start gnuplot: {}", reason(errno)));
+    throw Error(fmt::format("cannot start gnuplot: {}", errno_message(errno)));
   }
   Descriptor ours(sockets[0]);
   Descriptor theirs(sockets[1]);
@@ -425,7 +421,7 @@ std::string svg_element(const Figure& figure) {
   validate(figure);
   // gnuplot writes to an anonymous file (no name, so nothing is left behind if we are killed).
   const std::unique_ptr<std::FILE, FileCloser> image(std::tmpfile());
-  if (!image) throw Error(fmt::format("cannot render an SVG: {}", reason(errno)));
+  if (!image) throw Error(fmt::format("cannot render an SVG: {}", errno_message(errno)));
   ::fcntl(::fileno(image.get()), F_SETFD, FD_CLOEXEC);
   render(script_for(figure, {}, Format::svg), {}, ::fileno(image.get()), "(SVG element)");
   std::rewind(image.get());

@@ -82,13 +82,13 @@ BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params_json,
   return params;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_bouc_wen(const nlohmann::json& params_json,
+                                              const nlohmann::json* state_json) {
   return make_dynamic_model<BoucWenCodec>(bouc_wen_params_from_json(params_json, "params"),
                                           state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_bouc_wen_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   BoucWenFitOptions options;
   options.fit_n = fields.boolean_or("fit_n", options.fit_n);
@@ -127,8 +127,8 @@ ModelEntry bouc_wen_entry() {
       {"global_evaluations", "whole number", "",
        "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_bouc_wen;
+  entry.fit = &fit_bouc_wen_request;
   entry.example_params = {{"a", 1.0}, {"beta", 0.6},      {"gamma", 0.2},
                           {"n", 1.5}, {"stiffness", 1.0}, {"alpha_k", 0.3}};
   entry.c_code = c_code_of<BoucWenCodec>();

@@ -107,8 +107,8 @@ GpiParams params_from_json(JsonFields& fields) {
   return params;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_generalized_prandtl_ishlinskii(
+    const nlohmann::json& params_json, const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   auto params = params_from_json(fields);
   fields.finish();
@@ -117,7 +117,7 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   });
 }
 
-GpiFitOptions fit_options_from_json(const FitRequest& request) {
+GpiFitOptions generalized_prandtl_ishlinskii_fit_options(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   GpiFitOptions options;
   options.m = fields.count_or("m", options.m);
@@ -132,8 +132,8 @@ GpiFitOptions fit_options_from_json(const FitRequest& request) {
   return options;
 }
 
-FitOutcome fit(const FitRequest& request) {
-  const auto options = fit_options_from_json(request);
+FitOutcome fit_generalized_prandtl_ishlinskii_request(const FitRequest& request) {
+  const auto options = generalized_prandtl_ishlinskii_fit_options(request);
   auto result = fit_generalized_prandtl_ishlinskii(request.input, request.output, options);
   return {
       std::make_unique<ModelAdapter<GpiCodec<TanhEnvelope>>>(result.model, result.initial_state),
@@ -172,8 +172,8 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
       {"input_min", "number", "input units", "operating range (default: the data's)"},
       {"input_max", "number", "input units", "operating range (default: the data's)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_generalized_prandtl_ishlinskii;
+  entry.fit = &fit_generalized_prandtl_ishlinskii_request;
   // The parameter set of the reference checks (pi_check.py).
   entry.example_params = {{"envelope", "tanh"},
                           {"ascending", {2.0, 0.8, -0.1, 0.05}},

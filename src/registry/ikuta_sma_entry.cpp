@@ -70,8 +70,8 @@ IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params_json,
   return params;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_ikuta_sma(const nlohmann::json& params_json,
+                                               const nlohmann::json* state_json) {
   return make_dynamic_model<IkutaSmaCodec>(ikuta_sma_params_from_json(params_json, "params"),
                                            state_json);
 }
@@ -93,7 +93,7 @@ ModelEntry ikuta_sma_entry() {
       {"initial_fraction", "number", "", "martensite fraction at rest, in [0, 1] (default 1)"},
       {"initial_input", "number", "input units", "input of the initial rest state (default 0)"},
   };
-  entry.create = &create;
+  entry.create = &create_ikuta_sma;
   entry.example_params = {{"martensite_finish", -0.8}, {"martensite_start", 0.2},
                           {"austenite_start", -0.2},   {"austenite_finish", 0.8},
                           {"output_austenite", 1.0},   {"output_martensite", -1.0},

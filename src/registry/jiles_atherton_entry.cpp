@@ -78,15 +78,15 @@ struct JilesAthertonCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_jiles_atherton(const nlohmann::json& params_json,
+                                                    const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   auto params = JilesAthertonCodec::params_from_json(fields);
   fields.finish();
   return make_dynamic_model<JilesAthertonCodec>(params, state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   JilesAthertonFitOptions options;
   if (fields.has("variant")) {
@@ -143,8 +143,8 @@ ModelEntry jiles_atherton_entry() {
       {"global_evaluations", "whole number", "",
        "cost evaluations of the global search before the local starts, 0 = none (0)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_jiles_atherton;
+  entry.fit = &fit_jiles_atherton_request;
   entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},
                           {"c", 0.2},  {"alpha", 1e-6}, {"variant", "original"}};
   return entry;

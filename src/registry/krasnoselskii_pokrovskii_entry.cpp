@@ -58,13 +58,13 @@ KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
   return params;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_krasnoselskii_pokrovskii(const nlohmann::json& params_json,
+                                                              const nlohmann::json* state_json) {
   return make_dynamic_model<KpCodec>(
       krasnoselskii_pokrovskii_params_from_json(params_json, "params"), state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_krasnoselskii_pokrovskii_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   KpFitOptions options;
   options.levels = fields.count_or("levels", options.levels);
@@ -104,8 +104,8 @@ ModelEntry krasnoselskii_pokrovskii_entry() {
       {"ramp_cells", "number", "", "ramp width in cells (1)"},
       {"fit_offset", "boolean", "", "fit the output offset (true)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_krasnoselskii_pokrovskii;
+  entry.fit = &fit_krasnoselskii_pokrovskii_request;
   entry.example_params = {{"levels", 6},       {"lower", -1.0},
                           {"upper", 1.0},      {"weights", std::vector<double>(21, 1.0 / 21.0)},
                           {"ramp_cells", 1.0}, {"offset", 0.0}};

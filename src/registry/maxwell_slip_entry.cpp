@@ -86,13 +86,13 @@ MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_j
   return params;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_maxwell_slip(const nlohmann::json& params_json,
+                                                  const nlohmann::json* state_json) {
   return make_dynamic_model<MaxwellSlipCodec>(maxwell_slip_params_from_json(params_json, "params"),
                                               state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_maxwell_slip_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   MaxwellSlipFitOptions options;
   options.elements = fields.count_or("elements", options.elements);
@@ -143,8 +143,8 @@ ModelEntry maxwell_slip_entry() {
        "loop orientation in the (x, F) plane: \"auto\" (default: the sign of the enclosed "
        "area, clockwise when the area is 0), \"clockwise\" or \"counter-clockwise\""},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_maxwell_slip;
+  entry.fit = &fit_maxwell_slip_request;
   entry.example_params = {{"stiffness", {3.0, 2.0, 1.0}},
                           {"break_away", {0.3, 0.4, 0.5}},
                           {"linear_stiffness", 0.5},

@@ -12,13 +12,10 @@
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
+#include "play_state_json.hpp"
 
 namespace hyst::detail {
 namespace {
-
-nlohmann::json play_state_to_json(const PrandtlIshlinskii::State& state) {
-  return {{"play", state.play}};
-}
 
 struct ModifiedPiCodec {
   using Model = ModifiedPrandtlIshlinskii;
@@ -98,8 +95,8 @@ std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
   return field;
 }
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann::json& params_json,
+                                                                 const nlohmann::json* state_json) {
   auto params = modified_prandtl_ishlinskii_params_from_json(params_json, "params");
   // The model's fields are "pi.thresholds" etc.; in the file they are flat.
   try {
@@ -111,7 +108,7 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   }
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_modified_prandtl_ishlinskii_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   ModifiedPiFitOptions options;
   options.operators = fields.count_or("operators", options.operators);
@@ -170,8 +167,8 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
       {"output_margin", "number", "",
        "widen those limits by this fraction of the output range on each side (0)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_modified_prandtl_ishlinskii;
+  entry.fit = &fit_modified_prandtl_ishlinskii_request;
   entry.example_params = {{"thresholds", {0.0, 0.3, 0.7, 1.0}},
                           {"weights", {0.8, 0.5, 0.3, 0.2}},
                           {"pi_offset", 0.0},

@@ -105,15 +105,15 @@ struct NarxCodec {
 
 using NarxAdapter = ModelAdapter<NarxCodec>;
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_narx(const nlohmann::json& params_json,
+                                          const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   auto params = NarxCodec::params_from_json(fields);
   fields.finish();
   return make_dynamic_model<NarxCodec>(std::move(params), state_json);
 }
 
-NarxFitOptions fit_options_from_json(const FitRequest& request) {
+NarxFitOptions narx_fit_options(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   NarxFitOptions options;
   options.input_lags = fields.count_or("input_lags", options.input_lags);
@@ -134,8 +134,8 @@ NarxFitOptions fit_options_from_json(const FitRequest& request) {
   return options;
 }
 
-FitOutcome fit(const FitRequest& request) {
-  const auto options = fit_options_from_json(request);
+FitOutcome fit_narx_request(const FitRequest& request) {
+  const auto options = narx_fit_options(request);
   auto result = fit_narx(request.input, request.output, options);
   return {std::make_unique<NarxAdapter>(result.model, result.initial_state),
           std::move(result.report)};
@@ -174,8 +174,8 @@ ModelEntry narx_entry() {
       {"early_stopping_fraction", "number", "", "end of the fit part monitored in free run (0.2)"},
       {"regularization", "number", "", "ridge weight on the network weights (1e-6)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_narx;
+  entry.fit = &fit_narx_request;
   // 1 past input, 1 past output, 1 play, 2 neurons: 4 regressors, 2*4+2 + 2+1 + 4 = 17 weights.
   entry.example_params = {
       {"input_lags", 1},

@@ -10,13 +10,10 @@
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
 #include "pi_batch_inverse.hpp"
+#include "play_state_json.hpp"
 
 namespace hyst::detail {
 namespace {
-
-nlohmann::json play_state_to_json(const PrandtlIshlinskii::State& state) {
-  return {{"play", state.play}};
-}
 
 // The inverse PI of `hyst invert` and Python: batches in O(log m) per sample
 // (pi_batch_inverse.hpp).
@@ -85,15 +82,15 @@ struct PrandtlIshlinskiiCodec {
 
 using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_prandtl_ishlinskii(const nlohmann::json& params_json,
+                                                        const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
   fields.finish();
   return make_dynamic_model<PrandtlIshlinskiiCodec>(std::move(params), state_json);
 }
 
-PiFitOptions fit_options_from_json(const FitRequest& request) {
+PiFitOptions prandtl_ishlinskii_fit_options(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   PiFitOptions options;
   options.operators = fields.count_or("operators", options.operators);
@@ -108,8 +105,8 @@ PiFitOptions fit_options_from_json(const FitRequest& request) {
   return options;
 }
 
-FitOutcome fit(const FitRequest& request) {
-  const auto options = fit_options_from_json(request);
+FitOutcome fit_prandtl_ishlinskii_request(const FitRequest& request) {
+  const auto options = prandtl_ishlinskii_fit_options(request);
   auto result = fit_prandtl_ishlinskii(request.input, request.output, options);
   return {std::make_unique<PrandtlIshlinskiiAdapter>(result.model, result.initial_state),
           std::move(result.report)};
@@ -136,8 +133,8 @@ ModelEntry prandtl_ishlinskii_entry() {
       {"min_linear_weight", "number", "", "lower bound of p_0, keeps the model invertible"},
       {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_prandtl_ishlinskii;
+  entry.fit = &fit_prandtl_ishlinskii_request;
   entry.example_params = {
       {"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.0}};
   entry.c_code = c_code_of<PrandtlIshlinskiiCodec>();

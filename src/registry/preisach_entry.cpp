@@ -83,13 +83,13 @@ struct PreisachCodec {
 
 using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_preisach(const nlohmann::json& params_json,
+                                              const nlohmann::json* state_json) {
   return make_dynamic_model<PreisachCodec>(preisach_params_from_json(params_json, "params"),
                                            state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_preisach_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   PreisachWeightFitOptions options;
   options.levels = fields.count_or("levels", options.levels);
@@ -140,8 +140,8 @@ ModelEntry preisach_entry() {
       {"smoothness", "number", "", "Tikhonov weight on neighbouring relay weights (0)"},
       {"fit_offset", "boolean", "", "fit the output offset (true)"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_preisach;
+  entry.fit = &fit_preisach_request;
   // The unweighted 231-relay model of the seed paper (mu = 1 for every relay).
   entry.example_params = {{"levels", 21},
                           {"lower", -1.0},

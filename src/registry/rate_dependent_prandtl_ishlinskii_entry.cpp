@@ -49,8 +49,8 @@ struct RateDependentPiCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_rate_dependent_prandtl_ishlinskii(
+    const nlohmann::json& params_json, const nlohmann::json* state_json) {
   JsonFields fields(params_json, "params");
   RateDependentPrandtlIshlinskii::Params params;
   params.thresholds = fields.numbers("thresholds");
@@ -63,7 +63,7 @@ std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
   return make_dynamic_model<RateDependentPiCodec>(std::move(params), state_json);
 }
 
-FitOutcome fit(const FitRequest& request) {
+FitOutcome fit_rate_dependent_prandtl_ishlinskii_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   RateDependentPiFitOptions options;
   options.operators = fields.count_or("operators", options.operators);
@@ -108,8 +108,8 @@ ModelEntry rate_dependent_prandtl_ishlinskii_entry() {
       {"fit_offset", "boolean", "", "fit the output offset (true)"},
       {"min_linear_weight", "number", "", "lower bound of p_0, keeps p_0 > 0"},
   };
-  entry.create = &create;
-  entry.fit = &fit;
+  entry.create = &create_rate_dependent_prandtl_ishlinskii;
+  entry.fit = &fit_rate_dependent_prandtl_ishlinskii_request;
   entry.example_params = {{"thresholds", {0.0, 0.2, 0.4, 0.6}},
                           {"weights", {1.0, 0.6, 0.4, 0.2}},
                           {"rate_gain", 0.002},

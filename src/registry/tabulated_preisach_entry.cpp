@@ -74,8 +74,8 @@ struct TabulatedPreisachCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create(const nlohmann::json& params_json,
-                                     const nlohmann::json* state_json) {
+std::unique_ptr<DynamicModel> create_tabulated_preisach(const nlohmann::json& params_json,
+                                                        const nlohmann::json* state_json) {
   return make_dynamic_model<TabulatedPreisachCodec>(
       tabulated_params_from_json(params_json, "params"), state_json);
 }
@@ -103,7 +103,7 @@ ModelEntry tabulated_preisach_entry() {
       {"initial_state", "string", "",
        "negative_saturation (default), positive_saturation or demagnetised"},
   };
-  entry.create = &create;
+  entry.create = &create_tabulated_preisach;
   // Four uniform cells over [-1, 1], each cell weight 0.1: E(x_a, x_c) = 0.1 (a-c)(a-c+1)/2,
   // total weight 1 (the output spans [-1, 1]).
   std::vector<double> values;

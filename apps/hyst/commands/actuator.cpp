@@ -30,7 +30,7 @@ struct SimulateOptions {
   std::string strategy = "pid_feedforward";
 };
 
-struct CompareOptions {
+struct ActuatorCompareOptions {
   std::string config;
   std::string out_dir;
   bool no_plots = false;
@@ -62,7 +62,7 @@ void simulate(const SimulateOptions& options) {
              metrics.rms_error, metrics.max_error, metrics.control_effort);
 }
 
-void compare(const CompareOptions& options) {
+void compare(const ActuatorCompareOptions& options) {
   const std::filesystem::path folder = options.out_dir;
   // The tables and plots in --out-dir are published as one set (hyst/io/output_set.hpp).
   std::optional<io::OutputSet> set;
@@ -128,7 +128,7 @@ void add_actuator_command(CLI::App& app) {
   hyst actuator simulate --config examples/config/msma_assumed.json --reference r.csv --out o.csv)");
   sim->callback([simulate_options] { simulate(*simulate_options); });
 
-  auto compare_options = std::make_shared<CompareOptions>();
+  auto compare_options = std::make_shared<ActuatorCompareOptions>();
   auto* cmp = command->add_subcommand(
       "compare",
       "Compare open loop, inverse feedforward, PID and PID + feedforward on the configuration's "

@@ -21,7 +21,7 @@
 namespace hyst::cli {
 namespace {
 
-struct InfoOptions {
+struct DataInfoOptions {
   std::string file;
   std::optional<std::size_t> table;
   double band_fraction = 0.02;
@@ -73,7 +73,7 @@ void print_forc(const data::ForcInfo& f) {
   fmt::print("  moment unit         {}\n", f.moment_unit.empty() ? "-" : f.moment_unit);
 }
 
-void run_info(const InfoOptions& options) {
+void run_info(const DataInfoOptions& options) {
   if (!options.loop.empty() && options.loop.size() != 2) {
     throw Error(
         fmt::format("--loop expects two columns INPUT,OUTPUT, got {}", options.loop.size()));
@@ -144,7 +144,7 @@ void add_data_command(CLI::App& app) {
   hyst data extract RMN_TRAP_SLOW.dat --table 6 --columns V+,P1 --out p.csv
 Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
 
-  auto info = std::make_shared<InfoOptions>();
+  auto info = std::make_shared<DataInfoOptions>();
   auto* info_command = command->add_subcommand(
       "info", "Tables, columns, units, lengths, ranges, reversal points and cycles of a file.");
   info_command

@@ -18,7 +18,7 @@ template <class H>
 class InverseCompensator {
  public:
   using Model = H;
-  using Inverse = typename InverseModel<H>::type;
+  using Inverse = typename ForceInverse<H>::type;
   struct Params {
     double force_gain = 1.0;   //!< k_F [N/A], > 0
     double current_min = 0.0;  //!< [A]
@@ -31,7 +31,7 @@ class InverseCompensator {
   //! hyst::Error unless k_F > 0 and current_min < current_max (all finite).
   InverseCompensator(const H& model, const Params& params)
       : params_(validated(params)),
-        inverse_(InverseModel<H>::make(model, params.current_min, params.current_max)) {}
+        inverse_(ForceInverse<H>::make(model, params.current_min, params.current_max)) {}
 
   const Params& params() const { return params_; }
   const Inverse& inverse() const { return inverse_; }

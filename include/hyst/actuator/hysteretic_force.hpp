@@ -12,14 +12,14 @@
 //!   Code that runs a loop visits the variant once and runs the whole loop inside the visit, so no
 //!   sample pays for a virtual call or a variant dispatch.
 //!
-//! The inverse of each model (InverseModel<H>): analytic where the model has one - IGPI for GPI,
+//! The inverse of each model (ForceInverse<H>): analytic where the model has one - IGPI for GPI,
 //! the inverse PI for PI and for Maxwell-slip (a stop-type PI model, invertible iff
 //! linear_stiffness > 0, or > sum k_i for counter-clockwise loops), Kuhnen's inverse for the
 //! modified PI - and otherwise the bracketed numerical inverse: InversePreisach for Preisach,
 //! NumericalInverse<H> for every other model (KP, Ikuta SMA, Bouc-Wen), which needs a monotone
 //! one-step map and a preview() or a trivially copyable state (numerical_inverse.hpp). Adding a
 //! force model (docs/architecture.md): its type in AnyHysteresis and `actuator_force` in its
-//! registry entry; an InverseModel specialisation only for an analytic inverse.
+//! registry entry; a ForceInverse specialisation only for an analytic inverse.
 //!
 //! Not a force model: the rate-dependent PI ("rate_dependent_pi"). Its output depends on the
 //! input rate (through the sample time of the model, not of the actuator) and hyst provides no
@@ -44,7 +44,7 @@ namespace hyst {
 //! The inverse of model type H, built with input (current) limits: by default the numerical
 //! inverse; specialised below for the models with an analytic or their own inverse.
 template <class H>
-struct InverseModel {
+struct ForceInverse {
   using type = NumericalInverse<H>;
   static type make(const H& model, double input_min, double input_max) {
     NumericalInverseOptions options;
@@ -65,18 +65,18 @@ struct LimitedInverse {
 };
 
 template <Envelope E>
-struct InverseModel<GeneralizedPrandtlIshlinskii<E>>
+struct ForceInverse<GeneralizedPrandtlIshlinskii<E>>
     : LimitedInverse<InverseGeneralizedPrandtlIshlinskii<E>> {};
 
 template <>
-struct InverseModel<PrandtlIshlinskii> : LimitedInverse<InversePrandtlIshlinskii> {};
+struct ForceInverse<PrandtlIshlinskii> : LimitedInverse<InversePrandtlIshlinskii> {};
 
 template <>
-struct InverseModel<ModifiedPrandtlIshlinskii> : LimitedInverse<InverseModifiedPrandtlIshlinskii> {
+struct ForceInverse<ModifiedPrandtlIshlinskii> : LimitedInverse<InverseModifiedPrandtlIshlinskii> {
 };
 
 template <>
-struct InverseModel<Preisach> {
+struct ForceInverse<Preisach> {
   using type = InversePreisach;
   static type make(const Preisach& model, double input_min, double input_max) {
     InversePreisachOptions options;
@@ -89,7 +89,7 @@ struct InverseModel<Preisach> {
 //! Maxwell-slip = a PI model (maxwell_slip.hpp) whose initial play state (all 0) matches the
 //! relaxed springs at x = 0, so the PI inverse starts consistent with the forward model.
 template <>
-struct InverseModel<MaxwellSlip> {
+struct ForceInverse<MaxwellSlip> {
   using type = InversePrandtlIshlinskii;
   //! Throws hyst::Error unless the slope after a reversal is > 0 (maxwell_slip.hpp): without it
   //! the force saturates or falls and has no inverse.

@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
 
 namespace hyst {
@@ -27,5 +28,10 @@ class Error : public std::runtime_error {
  private:
   std::string field_;
 };
+
+//! The system's text for an errno value ("No such file or directory"), for messages about files.
+inline std::string errno_message(int error_number) {
+  return std::generic_category().message(error_number);
+}
 
 }  // namespace hyst
