@@ -28,7 +28,7 @@ command -v gnuplot >/dev/null || {
 
 # record FILE AMPLITUDE: v (a sine growing to AMPLITUDE) and y, the PI model's output.
 record() {
-  awk -v a="$2" 'BEGIN { print "v"; for (i = 0; i < 3000; i++) printf "%.17g\n", a * (i / 3000) * sin(i * 0.05) }' >in.csv
+  awk -v a="$2" 'BEGIN { print "v"; for (i = 0; i < 1000; i++) printf "%.17g\n", a * (i / 1000) * sin(i * 0.05) }' >in.csv
   "$HYST" simulate --model m.json --input in.csv --out "$1" >/dev/null || fail "making $1"
 }
 
