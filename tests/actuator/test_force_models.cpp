@@ -28,7 +28,7 @@
 namespace hyst {
 namespace {
 
-const std::string kConfigDir = HYST_EXAMPLE_CONFIG_DIR;
+const std::string kForceConfigDir = HYST_EXAMPLE_CONFIG_DIR;
 
 // Virtual current i_d: three triangle loops between 1 and 9 A (current range 0..10 A).
 std::vector<double> demand() {
@@ -154,7 +154,7 @@ TEST(ForceModels, BoucWenIsLinearisedByTheNumericalInverse) {
 
 // The MSMA actuator file with another force model (0..8 A, about 0..76 N).
 nlohmann::json msma_with(const nlohmann::json& hysteresis) {
-  auto document = nlohmann::json::parse(io::read_file(kConfigDir + "/msma_assumed.json"));
+  auto document = nlohmann::json::parse(io::read_file(kForceConfigDir + "/msma_assumed.json"));
   document["hysteresis"] = hysteresis;
   return document;
 }

@@ -22,11 +22,11 @@
 namespace hyst {
 namespace {
 
-constexpr std::size_t kSteps = 100'000;
+constexpr std::size_t kGpiSteps = 100'000;
 
 // 0 .. 8 A random walk for the MSMA-like model.
 std::vector<double> current(std::uint64_t seed) {
-  auto i = test::random_walk(kSteps, seed, 3.9, 0.3);
+  auto i = test::random_walk(kGpiSteps, seed, 3.9, 0.3);
   for (double& x : i)
     x += 4.0;
   return i;
@@ -47,7 +47,7 @@ TEST(NoAllocationGpi, GeneralizedPlayStep) {
                                             .input_min = -2,
                                             .input_max = 2});
   auto state = play.initial_state();
-  const auto v = test::random_walk(kSteps, 1);
+  const auto v = test::random_walk(kGpiSteps, 1);
   double sink = 0;
   const long before = test::allocation_count();
   for (double x : v)
@@ -84,7 +84,7 @@ TEST(NoAllocationGpi, InverseSolveAndBatchInvert) {
   const InverseGeneralizedPrandtlIshlinskii<TanhEnvelope> inverse(
       model, {.input_min = 0.0, .input_max = 8.0});
   auto state = inverse.state_at_rest(40.0);
-  auto targets = test::random_walk(kSteps, 3, 30.0, 2.0);
+  auto targets = test::random_walk(kGpiSteps, 3, 30.0, 2.0);
   for (double& y : targets)
     y += 40.0;
   std::vector<double> inputs(targets.size());

@@ -19,7 +19,7 @@
 namespace hyst {
 namespace {
 
-const std::vector<double> kThresholds = {0.0, 0.3, 0.7, 1.1};
+const std::vector<double> kPiThresholds = {0.0, 0.3, 0.7, 1.1};
 
 void ramp_to(std::vector<double>& v, double target, std::size_t steps = 40) {
   const double from = v.empty() ? 0.0 : v.back();
@@ -29,7 +29,7 @@ void ramp_to(std::vector<double>& v, double target, std::size_t steps = 40) {
 
 // `periods` periods of a sine of `amplitude` from 0. With `back_to_rest`, a tail of ramps
 // -2, +1.1, -0.7, +0.3, 0 follows: by the play-operator rule y = max(v - r, min(v + r, y)) it
-// sets every operator of kThresholds back to 0 whatever came before (|v| <= 2), so records
+// sets every operator of kPiThresholds back to 0 whatever came before (|v| <= 2), so records
 // simulated from rest can be joined in any order without a jump in the state.
 std::vector<double> sine_record(double amplitude, int periods, bool back_to_rest) {
   std::vector<double> v;
@@ -44,7 +44,7 @@ std::vector<double> sine_record(double amplitude, int periods, bool back_to_rest
 }
 
 NamedRecord pi_record(const std::string& name, std::vector<double> v) {
-  const PrandtlIshlinskii model({.thresholds = kThresholds, .weights = {0.8, 0.5, 0.3, 0.2}});
+  const PrandtlIshlinskii model({.thresholds = kPiThresholds, .weights = {0.8, 0.5, 0.3, 0.2}});
   auto state = model.initial_state();
   auto y = simulate(model, state, v);
   return {name, std::move(v), std::move(y)};
@@ -55,7 +55,7 @@ NamedRecord pi_record(const std::string& name, std::vector<double> v) {
 CrossRecordOptions pi_against_bouc_wen() {
   CrossRecordOptions options;
   options.models = {"bouc_wen", "pi"};
-  options.fit_options["pi"] = {{"thresholds", kThresholds}};
+  options.fit_options["pi"] = {{"thresholds", kPiThresholds}};
   options.fit_options["bouc_wen"] = {{"global_evaluations", 0}, {"max_iterations", 20}};
   return options;
 }

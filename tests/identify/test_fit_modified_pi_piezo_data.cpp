@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Record {
+struct ModifiedPiRecord {
   std::string name;
   std::vector<double> voltage;
   std::vector<double> displacement;
@@ -37,12 +37,12 @@ TEST(FitModifiedPiPiezoData, AsymmetricMapVersusClassicalPi) {
   const fs::path mat =
       fs::path(HYST_SHARED_DATA_DIR) / "piezo_pzt_aixacct_butterfly" / "MeasurementData.mat";
   if (!fs::exists(mat)) GTEST_SKIP() << mat << " not found";
-  std::vector<Record> records;
+  std::vector<ModifiedPiRecord> records;
   for (const std::string name : {"08kv", "1kv", "11kv", "15kv", "19kv"}) {
     records.push_back({name, io::read_mat_vector(mat, "Vplus_" + name),
                        io::read_mat_vector(mat, "Displacement_" + name)});
   }
-  const Record& fitted = records[3];
+  const ModifiedPiRecord& fitted = records[3];
   PiFitOptions pi_options;
   pi_options.operators = 10;
   pi_options.initial_state = PiFitOptions::InitialState::periodic;

@@ -35,13 +35,13 @@
 namespace hyst {
 namespace {
 
-const char* const kFile =
+const char* const kForcDataFile =
     HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/conventional_example.forc";
 constexpr double kNano = 1e9;  // A m^2 -> nA m^2
 
 std::vector<ReversalCurve> load_curves() {
-  const auto file =
-      io::correct_drift(io::read_micromag_forc(kFile), io::ForcDriftCorrection::multiplicative);
+  const auto file = io::correct_drift(io::read_micromag_forc(kForcDataFile),
+                                      io::ForcDriftCorrection::multiplicative);
   std::vector<ReversalCurve> curves;
   for (const auto& c : file.curves) {
     ReversalCurve curve{c.field, c.moment};
@@ -58,7 +58,7 @@ std::string row(std::string_view part, const ErrorMetrics& m) {
 }
 
 TEST(FitPreisachForcData, PredictsHeldOutForcsAndTheMajorLoop) {
-  if (!std::filesystem::exists(kFile)) GTEST_SKIP() << "no " << kFile;
+  if (!std::filesystem::exists(kForcDataFile)) GTEST_SKIP() << "no " << kForcDataFile;
   const auto curves = load_curves();
   ASSERT_EQ(curves.size(), 120U);
   std::vector<std::size_t> held_out;

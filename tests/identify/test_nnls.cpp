@@ -17,7 +17,7 @@ namespace {
 
 // The options field a hyst::Error names ("no error" when nothing is thrown).
 template <class Statement>
-std::string field_of(Statement statement) {
+std::string nnls_field_of(Statement statement) {
   try {
     statement();
   } catch (const Error& error) {
@@ -248,9 +248,9 @@ TEST(Nnls, RejectsInvalidInput) {
   EXPECT_HYST_ERROR(nnls(A, b, {.tolerance = -1.0}), "NNLS tolerance = -1 must be finite and >= 0");
   EXPECT_HYST_ERROR(nnls(A, b, {.tolerance = std::numeric_limits<double>::quiet_NaN()}),
                     "NNLS tolerance = nan");
-  EXPECT_EQ(field_of([&] { nnls(A, b, {.tolerance = -1.0}); }), "tolerance");
-  EXPECT_EQ(field_of([&] { nnls(A, b, {.max_iterations = 0}); }), "max_iterations");
-  EXPECT_EQ(field_of([&] { nnls(bad_A, b); }), "") << "not an options field";
+  EXPECT_EQ(nnls_field_of([&] { nnls(A, b, {.tolerance = -1.0}); }), "tolerance");
+  EXPECT_EQ(nnls_field_of([&] { nnls(A, b, {.max_iterations = 0}); }), "max_iterations");
+  EXPECT_EQ(nnls_field_of([&] { nnls(bad_A, b); }), "") << "not an options field";
 }
 
 }  // namespace

@@ -17,11 +17,11 @@
 namespace hyst::io {
 namespace {
 
-const char* const kFile =
+const char* const kMagicFile =
     HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/hysteresis_magic_example.dat";
 
 TEST(MagicTable, PmagpyExampleGivesEightLoops) {
-  const auto table = read_magic_table(kFile);
+  const auto table = read_magic_table(kMagicFile);
   EXPECT_EQ(table.name, "magic_measurements");
   EXPECT_EQ(table.columns.size(), 16u);
   EXPECT_EQ(table.rows.size(), 3516u);  // PROVENANCE.md
@@ -43,7 +43,7 @@ TEST(MagicTable, PmagpyExampleGivesEightLoops) {
   EXPECT_EQ(loops.back().specimen, "IS06a-9");
 
   // Second count: lines whose method-code cell is LP-HYS, by a plain text scan.
-  std::ifstream stream(kFile);
+  std::ifstream stream(kMagicFile);
   std::string line;
   std::size_t loop_rows = 0;
   while (std::getline(stream, line))

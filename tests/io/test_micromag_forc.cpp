@@ -20,12 +20,12 @@
 namespace hyst::io {
 namespace {
 
-const char* const kFile =
+const char* const kForcFile =
     HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/conventional_example.forc";
 const char* const kVsmFile = HYST_TEST_DATA_DIR "/micromag/series_0016.forc";
 
 // A small file in the same layout: calibration, curve, calibration, curve, end marker.
-std::string small_file(std::string_view data, std::string_view ndata = "5") {
+std::string small_forc_file(std::string_view data, std::string_view ndata = "5") {
   return fmt::format(
       "MicroMag 2900/3900 Data File (Series 0015)\r\n"
       "First-order reversal curves\r\n"
@@ -55,8 +55,8 @@ constexpr std::string_view kData =
     "+0.0E+00,+1.0E-07\r\n";
 
 TEST(MicromagForc, ReadsTheMeasuredExampleFile) {
-  if (!std::filesystem::exists(kFile)) GTEST_SKIP() << "no " << kFile;
-  const auto file = read_micromag_forc(kFile);
+  if (!std::filesystem::exists(kForcFile)) GTEST_SKIP() << "no " << kForcFile;
+  const auto file = read_micromag_forc(kForcFile);
   EXPECT_EQ(file.format, "MicroMag 2900/3900 Data File (Series 0015)");
   EXPECT_EQ(file.title, "First-order reversal curves");
   EXPECT_EQ(file.header_text("Units of measure"), "Hybrid SI");
@@ -92,7 +92,7 @@ TEST(MicromagForc, ReadsTheMeasuredExampleFile) {
 }
 
 TEST(MicromagForc, ParsesASmallFile) {
-  const auto file = parse_micromag_forc(small_file(kData), "small.forc");
+  const auto file = parse_micromag_forc(small_forc_file(kData), "small.forc");
   ASSERT_EQ(file.curves.size(), 2U);
   EXPECT_EQ(file.curves[0].field, (std::vector<double>{0.1}));
   EXPECT_EQ(file.curves[1].field, (std::vector<double>{-0.1, 0.0}));
@@ -102,7 +102,7 @@ TEST(MicromagForc, ParsesASmallFile) {
   EXPECT_EQ(file.header_number("Configuration"), std::nullopt);
   EXPECT_EQ(file.header_text("Missing"), std::nullopt);
   // LF line ends and a trailing calibration point are fine too.
-  std::string lf = small_file(std::string(kData) + "\r\n+2.0E-01,+8.0E-07\r\n", "6");
+  std::string lf = small_forc_file(std::string(kData) + "\r\n+2.0E-01,+8.0E-07\r\n", "6");
   std::erase(lf, '\r');
   const auto with_final = parse_micromag_forc(lf, "lf.forc");
   ASSERT_TRUE(with_final.final_calibration.has_value());
@@ -110,7 +110,7 @@ TEST(MicromagForc, ParsesASmallFile) {
 }
 
 TEST(MicromagForc, CorrectsDrift) {
-  const auto file = parse_micromag_forc(small_file(kData), "small.forc");
+  const auto file = parse_micromag_forc(small_forc_file(kData), "small.forc");
   // Curve 1 (2 points) between the calibrations 9e-7 (before) and 9e-7 (none after: before).
   const auto scaled = correct_drift(file, ForcDriftCorrection::multiplicative);
   EXPECT_DOUBLE_EQ(scaled.curves[1].moment[0], -5e-7 * 1e-6 / 9e-7);
@@ -135,33 +135,33 @@ TEST(MicromagForc, ErrorsNameTheFileAndLine) {
   std::string bad(kData);
   bad.replace(bad.find("+1.0E-01"), 8, "x.1E-01");
   EXPECT_HYST_ERROR(
-      parse_micromag_forc(small_file(bad), "bad.forc"),
+      parse_micromag_forc(small_forc_file(bad), "bad.forc"),
       "bad.forc:14: 'x.1E-01,+5.0E-07' is not 'field,moment' with two finite numbers");
   bad = kData;
   bad.replace(bad.find("+1.0E-01,+5.0E-07"), 17, "+1.0E-01");
-  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(bad), "bad.forc"),
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_forc_file(bad), "bad.forc"),
                     "bad.forc:14: '+1.0E-01' is not 'field,moment'");
   bad = kData;
   bad.replace(bad.find("+1.0E-01,+5.0E-07"), 17, "+1.0E-01,nan");
-  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(bad), "bad.forc"),
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_forc_file(bad), "bad.forc"),
                     "bad.forc:14: '+1.0E-01,nan' is not 'field,moment' with two finite numbers");
-  std::string truncated = small_file(kData);
+  std::string truncated = small_forc_file(kData);
   truncated.resize(truncated.find("MicroMag 2900/3900 Data File ends"));
   EXPECT_HYST_ERROR(parse_micromag_forc(truncated, "cut.forc"),
                     "cut.forc:20: the file ends without the line 'MicroMag 2900/3900 Data File "
                     "ends' (truncated?)");
-  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(kData, "7"), "n.forc"),
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_forc_file(kData, "7"), "n.forc"),
                     "n.forc:21: the header says NData = 7 but the file has 5 data points");
   bad = kData;
   bad.insert(0, "+2.0E-01,+1.0E-06\r\n");
-  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(bad, "6"), "cal.forc"),
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_forc_file(bad, "6"), "cal.forc"),
                     "cal.forc:12: a calibration block has 2 points; expected 1");
   EXPECT_HYST_ERROR(
       parse_micromag_forc("MicroMag 2900/3900 Data File (Series 0015)\nFORC\nA = 1\n", "h.forc"),
       "h.forc:3: the file ends in its header, before any data (truncated?)");
   EXPECT_HYST_ERROR(read_micromag_forc("/nonexistent/file.forc"),
                     "cannot open '/nonexistent/file.forc'");
-  auto zero = parse_micromag_forc(small_file(kData), "z.forc");
+  auto zero = parse_micromag_forc(small_forc_file(kData), "z.forc");
   zero.curves[1].calibration_moment = 0.0;
   EXPECT_HYST_ERROR(correct_drift(zero, ForcDriftCorrection::multiplicative),
                     "z.forc: calibration moment before curve 1 is 0");
@@ -338,7 +338,7 @@ TEST(MicromagForc, CurveCountIsLimited) {
   std::string data;
   for (std::size_t k = 0; k <= limits::kMaxForcCurves; ++k)
     data += "2,1\n\n1,1\n\n";
-  EXPECT_HYST_ERROR(parse_micromag_forc(small_file(data, "0"), "many.forc"),
+  EXPECT_HYST_ERROR(parse_micromag_forc(small_forc_file(data, "0"), "many.forc"),
                     "more than 100000 FORCs; the limit is 100000 curves per file");
 }
 

@@ -25,8 +25,8 @@ namespace fs = std::filesystem;
 const fs::path kFolder = HYST_SHARED_DATA_DIR "/hystlab_vsm_hysteresis_loops";
 
 // A small file in the newer layout (series 0016): header, segment table, titles, two segments.
-std::string small_file(std::string_view data, std::string_view count = "4",
-                       std::string_view segments = "2") {
+std::string small_loop_file(std::string_view data, std::string_view count = "4",
+                            std::string_view segments = "2") {
   return fmt::format(
       "MicroMag 2900/3900 Data File (Series 0016.002)\r\n"
       "Direct moment vs. field; Hysteresis loop\r\n"
@@ -62,7 +62,7 @@ constexpr std::string_view kFourRows =
     "+5.0E-01,+2.1E-06,+1.1E-06\r\n";
 
 TEST(MicromagLoop, SmallFileGivesColumnsSegmentsAndHeader) {
-  const auto file = parse_micromag_loop(small_file(kFourRows), "small.hys");
+  const auto file = parse_micromag_loop(small_loop_file(kFourRows), "small.hys");
   EXPECT_EQ(file.format, "MicroMag 2900/3900 Data File (Series 0016.002)");
   EXPECT_EQ(file.title, "Direct moment vs. field; Hysteresis loop");
   ASSERT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment", "Adjusted Moment"}));
@@ -84,12 +84,12 @@ TEST(MicromagLoop, SmallFileGivesColumnsSegmentsAndHeader) {
 }
 
 TEST(MicromagLoop, LfLineEndsAndUnmatchedTitlesRead) {
-  std::string text = small_file(kFourRows);
+  std::string text = small_loop_file(kFourRows);
   std::erase(text, '\r');
   const auto file = parse_micromag_loop(text, "lf.hys");
   EXPECT_EQ(file.points(), 4u);
   // Titles that do not give one name per column: the columns are numbered.
-  std::string untitled = small_file(kFourRows);
+  std::string untitled = small_loop_file(kFourRows);
   untitled.replace(untitled.find("    Field         Moment     Moment"), 35, "    Data");
   const auto numbered = parse_micromag_loop(untitled, "untitled.hys");
   EXPECT_EQ(numbered.columns, (std::vector<std::string>{"Column 1", "Column 2", "Column 3"}));
@@ -155,32 +155,33 @@ TEST(MicromagLoop, DataFileOffersTheColumns) {
 TEST(MicromagLoop, MalformedFilesNameFileLineAndColumn) {
   EXPECT_HYST_ERROR(parse_micromag_loop("Field,Moment\n1,2\n", "x.hys"),
                     "x.hys:1: not a MicroMag data file");
-  std::string forc = small_file(kFourRows);
+  std::string forc = small_loop_file(kFourRows);
   forc.replace(forc.find("Direct moment vs. field; Hysteresis loop"), 40,
                "First-order reversal curves");
   EXPECT_HYST_ERROR(parse_micromag_loop(forc, "x.hys"), "x.hys:2: a MicroMag FORC file");
   EXPECT_HYST_ERROR(
-      parse_micromag_loop(small_file("+5.0E-01,+2.0E-06,+1.x0E-06\r\n", "1"), "x.hys"),
+      parse_micromag_loop(small_loop_file("+5.0E-01,+2.0E-06,+1.x0E-06\r\n", "1"), "x.hys"),
       "x.hys:21: column 3 ('Adjusted Moment'): '+1.x0E-06' is not a finite number");
-  EXPECT_HYST_ERROR(parse_micromag_loop(small_file("+5.0E-01,nan,+1.0E-06\r\n", "1"), "x.hys"),
+  EXPECT_HYST_ERROR(parse_micromag_loop(small_loop_file("+5.0E-01,nan,+1.0E-06\r\n", "1"), "x.hys"),
                     "x.hys:21: column 2 ('Moment'): 'nan' is not a finite number");
   EXPECT_HYST_ERROR(
-      parse_micromag_loop(small_file("+5.0E-01,+2.0E-06,+1.0E-06\r\n+5.0E-01,+2.0E-06\r\n", "2"),
-                          "x.hys"),
+      parse_micromag_loop(
+          small_loop_file("+5.0E-01,+2.0E-06,+1.0E-06\r\n+5.0E-01,+2.0E-06\r\n", "2"), "x.hys"),
       "x.hys:22: 2 fields, but the first data row (line 21) has 3");
-  EXPECT_HYST_ERROR(parse_micromag_loop(small_file(kFourRows, "5"), "x.hys"),
+  EXPECT_HYST_ERROR(parse_micromag_loop(small_loop_file(kFourRows, "5"), "x.hys"),
                     "x.hys: the header says 'Number of data 5' but the file has 4 data rows");
-  EXPECT_HYST_ERROR(parse_micromag_loop(small_file(kFourRows, "4", "3"), "x.hys"),
+  EXPECT_HYST_ERROR(parse_micromag_loop(small_loop_file(kFourRows, "4", "3"), "x.hys"),
                     "the header says 'Number of segments 3' but the segment table has 2 rows");
   EXPECT_HYST_ERROR(
-      parse_micromag_loop(small_file("+5.0E-01,+2.0E-06,+1.0E-06\r\nsome text\r\n", "1"), "x.hys"),
+      parse_micromag_loop(small_loop_file("+5.0E-01,+2.0E-06,+1.0E-06\r\nsome text\r\n", "1"),
+                          "x.hys"),
       "x.hys:22: 'some text' is not a data row (3 comma-separated numbers)");
   // Only a line starting "MicroMag" ends the file: a data row holding the marker's words is
   // still a data row (fuzzing found a file whose only data row was one).
   EXPECT_HYST_ERROR(
-      parse_micromag_loop(small_file("0000003,+100.0 Data File ends\r\n", "1"), "x.hys"),
+      parse_micromag_loop(small_loop_file("0000003,+100.0 Data File ends\r\n", "1"), "x.hys"),
       "x.hys:21: column 2 ('Column 2'): '+100.0 Data File ends' is not a finite number");
-  const std::string full = small_file(kFourRows);
+  const std::string full = small_loop_file(kFourRows);
   const std::string truncated = full.substr(0, full.find("-5.0E-01,-2.1E-06"));
   EXPECT_HYST_ERROR(parse_micromag_loop(truncated, "x.hys"),
                     "the file ends without the line 'MicroMag 2900/3900 Data File ends'");
@@ -195,7 +196,7 @@ TEST(MicromagLoop, MalformedFilesNameFileLineAndColumn) {
 }
 
 TEST(MicromagLoop, LooksLikeChecksTheFirstTwoLines) {
-  EXPECT_TRUE(looks_like_micromag_loop(small_file(kFourRows)));
+  EXPECT_TRUE(looks_like_micromag_loop(small_loop_file(kFourRows)));
   EXPECT_FALSE(
       looks_like_micromag_loop("MicroMag 2900/3900 Data File (Series 0015)\n"
                                "First-order reversal curves\n"));
@@ -210,7 +211,7 @@ TEST(MicromagLoop, UnitsFromTheUnitsLineOrTheHeader) {
   // CP4Q.hyst (Series 0015) has no units line: "Units of measure  Hybrid SI".
   EXPECT_EQ(read_micromag_loop(kFolder / "fig01" / "CP4Q.hyst").units,
             (std::vector<std::string>{"T", "A m\u00b2", "T", "A m\u00b2"}));
-  EXPECT_EQ(parse_micromag_loop(small_file(kFourRows), "u.hys").units,
+  EXPECT_EQ(parse_micromag_loop(small_loop_file(kFourRows), "u.hys").units,
             (std::vector<std::string>{"T", "Am2", "Am2"}));
   EXPECT_EQ(read_micromag_loop(kFolder / "fig10" / "A4.hys").initial_curve_points, 0U);
 }

@@ -25,7 +25,7 @@ namespace {
 const std::vector<double> kD{-1.5, -0.8, -0.3, 0.0, 0.4, 0.9, 1.6};
 const std::vector<double> kG{0.05, 0.1, 0.2, 1.0, -0.15, -0.2, -0.1};
 
-ModifiedPrandtlIshlinskii reference_model() {
+ModifiedPrandtlIshlinskii reference_modified_pi() {
   return ModifiedPrandtlIshlinskii({.pi = {.thresholds = {0, 0.3, 0.7, 1.0, 1.6, 2.2},
                                            .weights = {0.8, 0.5, 0.3, 0.2, 0.1, 0.05},
                                            .offset = 0.15},
@@ -73,7 +73,7 @@ TEST(DeadZoneSuperposition, ValuesByHandAndValidation) {
 }
 
 TEST(ModifiedPrandtlIshlinskii, IsTheDeadZoneMapOfThePiOutput) {
-  const auto model = reference_model();
+  const auto model = reference_modified_pi();
   const PrandtlIshlinskii pi(model.params().pi);
   const DeadZoneSuperposition map(model.params().dead_zone);
   auto state = model.initial_state();
@@ -83,7 +83,7 @@ TEST(ModifiedPrandtlIshlinskii, IsTheDeadZoneMapOfThePiOutput) {
 }
 
 TEST(ModifiedPrandtlIshlinskii, InverseRoundTripsTo1e12) {
-  const auto model = reference_model();
+  const auto model = reference_modified_pi();
   const InverseModifiedPrandtlIshlinskii inverse(model);
   // P^-1[P[v]] = v after an arbitrary history, with the consistent inverse state.
   auto forward = model.initial_state();
@@ -104,7 +104,7 @@ TEST(ModifiedPrandtlIshlinskii, InverseRoundTripsTo1e12) {
 }
 
 TEST(ModifiedPrandtlIshlinskii, InverseReportsLimitsAndRejectsNonInvertibleModels) {
-  const auto model = reference_model();
+  const auto model = reference_modified_pi();
   const InverseModifiedPrandtlIshlinskii limited(model, {.input_min = -1, .input_max = 1});
   auto state = limited.initial_state();
   const auto sample = limited.solve(state, 50.0);

@@ -21,7 +21,7 @@
 namespace hyst {
 namespace {
 
-constexpr std::size_t kSteps = 100'000;
+constexpr std::size_t kPreisachSteps = 100'000;
 
 Preisach grid101() {
   std::vector<double> mu(preisach_relay_count(101));
@@ -43,7 +43,7 @@ GaussianPreisach gaussian() {
 template <class Model>
 long allocations_of_steps(const Model& model, std::uint64_t seed) {
   auto state = model.initial_state();
-  const auto v = test::random_walk(kSteps, seed, 1.1, 0.2);
+  const auto v = test::random_walk(kPreisachSteps, seed, 1.1, 0.2);
   double sink = 0;
   const long before = test::allocation_count();
   for (double x : v) {
@@ -101,7 +101,7 @@ TEST(PreisachNoAllocation, FullMemoryTruncation) {
 TEST(PreisachNoAllocation, SimulateStatefulAndCopies) {
   const auto model = grid101();
   auto state = model.initial_state();
-  const auto v = test::random_walk(kSteps, 5);
+  const auto v = test::random_walk(kPreisachSteps, 5);
   std::vector<double> y(v.size());
   Stateful<Preisach> stateful(model);
   double sink = 0;
@@ -120,7 +120,7 @@ TEST(PreisachNoAllocation, InverseSolveAndBatchInvert) {
   const InversePreisach grid_inverse(grid101());
   auto state = inverse.initial_state();
   auto grid_state = grid_inverse.initial_state();
-  const auto targets = test::random_walk(kSteps / 10, 6, 1.2, 0.2);
+  const auto targets = test::random_walk(kPreisachSteps / 10, 6, 1.2, 0.2);
   std::vector<double> inputs(targets.size());
   double sink = 0;
   const long before = test::allocation_count();
