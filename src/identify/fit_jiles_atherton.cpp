@@ -323,6 +323,16 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
                                     const JilesAthertonFitOptions& options) {
   const auto clock_start = std::chrono::steady_clock::now();
   if (loops.empty()) throw Error("Jiles-Atherton fit: no loop", "loops");
+  if (!(options.max_field_step >= 0.0 && std::isfinite(options.max_field_step))) {
+    throw Error(fmt::format("Jiles-Atherton fit: max_field_step = {} must be finite and >= 0",
+                            options.max_field_step),
+                "max_field_step");
+  }
+  if (!(options.function_tolerance > 0.0 && std::isfinite(options.function_tolerance))) {
+    throw Error(fmt::format("Jiles-Atherton fit: function_tolerance = {} must be finite and > 0",
+                            options.function_tolerance),
+                "function_tolerance");
+  }
   for (std::size_t i = 0; i < loops.size(); ++i)
     check_loop(loops[i], "loops", i);
   for (std::size_t i = 0; i < validation.size(); ++i)

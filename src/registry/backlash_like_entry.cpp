@@ -49,14 +49,6 @@ struct BacklashLikeCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_backlash_like(const nlohmann::json& params_json,
-                                                   const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = BacklashLikeCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<BacklashLikeCodec>(params, state_json);
-}
-
 FitOutcome fit_backlash_like_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   DuhemFitOptions options;
@@ -82,7 +74,7 @@ ModelEntry backlash_like_entry() {
   entry.fit_options = {
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
   };
-  entry.create = &create_backlash_like;
+  entry.create = &create_from_json<BacklashLikeCodec>;
   entry.fit = &fit_backlash_like_request;
   entry.example_params = {{"a", 1.0}, {"c", 1.0}, {"b1", 0.6}};
   return entry;

@@ -80,14 +80,6 @@ struct BoucWenOscillatorCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_bouc_wen_oscillator(const nlohmann::json& params_json,
-                                                         const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = BoucWenOscillatorCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<BoucWenOscillatorCodec>(params, state_json);
-}
-
 FitOutcome fit_bouc_wen_oscillator_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   BoucWenOscillatorFitOptions options;
@@ -134,7 +126,7 @@ ModelEntry bouc_wen_oscillator_entry() {
       {"global_evaluations", "whole number", "",
        "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
-  entry.create = &create_bouc_wen_oscillator;
+  entry.create = &create_from_json<BoucWenOscillatorCodec>;
   entry.fit = &fit_bouc_wen_oscillator_request;
   const auto p = BoucWenOscillator::benchmark();
   entry.example_params = {

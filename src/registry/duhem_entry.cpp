@@ -66,14 +66,6 @@ struct DuhemCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_duhem(const nlohmann::json& params_json,
-                                           const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = DuhemCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<DuhemCodec>(params, state_json);
-}
-
 FitOutcome fit_duhem_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   DuhemFitOptions options;
@@ -110,7 +102,7 @@ ModelEntry duhem_entry() {
       {"global_evaluations", "whole number", "",
        "cost evaluations of the global search before the local starts, 0 = none (300)"},
   };
-  entry.create = &create_duhem;
+  entry.create = &create_from_json<DuhemCodec>;
   entry.fit = &fit_duhem_request;
   entry.example_params = {
       {"alpha", 1.0}, {"f_slope", 0.5}, {"f_sat", 1.0}, {"v_sat", 1.0}, {"g_peak", 0.5}};

@@ -78,14 +78,6 @@ struct JilesAthertonCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_jiles_atherton(const nlohmann::json& params_json,
-                                                    const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = JilesAthertonCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<JilesAthertonCodec>(params, state_json);
-}
-
 FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   JilesAthertonFitOptions options;
@@ -95,6 +87,10 @@ FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
   options.periodic = fields.boolean_or("periodic", false);
   options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
   options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
+  options.screening_iterations =
+      fields.count_or("screening_iterations", options.screening_iterations);
+  options.max_field_step = fields.number_or("max_field_step", options.max_field_step);
+  options.function_tolerance = fields.number_or("function_tolerance", options.function_tolerance);
   fields.finish();
   if (!(request.validate_fraction >= 0.0 && request.validate_fraction < 1.0)) {
     throw Error(fmt::format("validate_fraction = {} must be in [0, 1)", request.validate_fraction),
@@ -140,10 +136,15 @@ ModelEntry jiles_atherton_entry() {
       {"variant", "string", "", "original or venkataraman"},
       {"periodic", "boolean", "", "the record is one loop in steady state (false: demagnetised)"},
       {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (2000)"},
+      {"screening_iterations", "whole number", "",
+       "iterations of every start before the best one goes on (8)"},
+      {"max_field_step", "number", "A/m",
+       "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000 (0)"},
+      {"function_tolerance", "number", "", "relative cost change that ends the fit (1e-9)"},
       {"global_evaluations", "whole number", "",
        "cost evaluations of the global search before the local starts, 0 = none (0)"},
   };
-  entry.create = &create_jiles_atherton;
+  entry.create = &create_from_json<JilesAthertonCodec>;
   entry.fit = &fit_jiles_atherton_request;
   entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},
                           {"c", 0.2},  {"alpha", 1e-6}, {"variant", "original"}};

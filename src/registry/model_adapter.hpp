@@ -156,6 +156,18 @@ std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params p
   return adapter;
 }
 
+// The model of a model file's "params" (and "state", may be null) through its codec's
+// params_from_json: every field read, none left over. An entry's `create` for codecs that read
+// their parameters with JsonFields.
+template <class Codec>
+std::unique_ptr<DynamicModel> create_from_json(const nlohmann::json& params_json,
+                                               const nlohmann::json* state_json) {
+  JsonFields fields(params_json, "params");
+  auto params = Codec::params_from_json(fields);
+  fields.finish();
+  return make_dynamic_model<Codec>(std::move(params), state_json);
+}
+
 // A state built by `make` (the model's validating make_state), with the state object's path in
 // front of a validation error: "state: Ikuta state fraction = 2 must be in [0, 1]".
 template <class Make>

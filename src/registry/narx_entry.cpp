@@ -105,14 +105,6 @@ struct NarxCodec {
 
 using NarxAdapter = ModelAdapter<NarxCodec>;
 
-std::unique_ptr<DynamicModel> create_narx(const nlohmann::json& params_json,
-                                          const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = NarxCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<NarxCodec>(std::move(params), state_json);
-}
-
 NarxFitOptions narx_fit_options(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   NarxFitOptions options;
@@ -174,7 +166,7 @@ ModelEntry narx_entry() {
       {"early_stopping_fraction", "number", "", "end of the fit part monitored in free run (0.2)"},
       {"regularization", "number", "", "ridge weight on the network weights (1e-6)"},
   };
-  entry.create = &create_narx;
+  entry.create = &create_from_json<NarxCodec>;
   entry.fit = &fit_narx_request;
   // 1 past input, 1 past output, 1 play, 2 neurons: 4 regressors, 2*4+2 + 2+1 + 4 = 17 weights.
   entry.example_params = {

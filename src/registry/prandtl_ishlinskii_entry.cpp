@@ -82,14 +82,6 @@ struct PrandtlIshlinskiiCodec {
 
 using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
 
-std::unique_ptr<DynamicModel> create_prandtl_ishlinskii(const nlohmann::json& params_json,
-                                                        const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = PrandtlIshlinskiiCodec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<PrandtlIshlinskiiCodec>(std::move(params), state_json);
-}
-
 PiFitOptions prandtl_ishlinskii_fit_options(const FitRequest& request) {
   JsonFields fields(request.options, "fit options");
   PiFitOptions options;
@@ -133,7 +125,7 @@ ModelEntry prandtl_ishlinskii_entry() {
       {"min_linear_weight", "number", "", "lower bound of p_0, keeps the model invertible"},
       {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
   };
-  entry.create = &create_prandtl_ishlinskii;
+  entry.create = &create_from_json<PrandtlIshlinskiiCodec>;
   entry.fit = &fit_prandtl_ishlinskii_request;
   entry.example_params = {
       {"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.0}};

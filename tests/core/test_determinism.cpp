@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../support/test_signals.hpp"
@@ -75,8 +76,9 @@ TEST(Determinism, PreisachStepLoopEqualsSimulateAndTheRegistry) {
 // Every fitter, twice on the same data (the example model's response to a random walk): the
 // same parameters and the same report, bit for bit. The fitters draw no random numbers; a fitter
 // that does must take its seed from the options, which are the same here. One test per fitter, so
-// that they run in parallel; iterative fitters stop after a few iterations on a short record,
-// since reproducibility does not need convergence and the same code runs either way.
+// that they run in parallel; iterative fitters stop after a few iterations (and screen their
+// starts for two) on a short record, since reproducibility does not need convergence and the same
+// code runs either way.
 class FitDeterminism : public ::testing::TestWithParam<std::string> {};
 
 std::vector<std::string> fitter_names() {
@@ -94,10 +96,12 @@ TEST_P(FitDeterminism, TwoFitsGiveTheSameBits) {
   request.input = input;
   request.output = output;
   request.validate_fraction = 0.25;
-  const bool iterative =
-      std::any_of(entry.fit_options.begin(), entry.fit_options.end(),
-                  [](const auto& option) { return option.name == "max_iterations"; });
-  if (iterative) request.options["max_iterations"] = 8;
+  const auto has_option = [&](std::string_view name) {
+    return std::any_of(entry.fit_options.begin(), entry.fit_options.end(),
+                       [&](const auto& option) { return option.name == name; });
+  };
+  if (has_option("max_iterations")) request.options["max_iterations"] = 8;
+  if (has_option("screening_iterations")) request.options["screening_iterations"] = 2;
   const auto first = entry.fit(request);
   const auto second = entry.fit(request);
   EXPECT_EQ(first.model->params(), second.model->params());

@@ -2,7 +2,9 @@
 // status; on the measured Mn-Zn ferrite loops the fit of the largest loop predicts the smaller
 // ones.
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -76,6 +78,23 @@ TEST(FitJilesAtherton, RejectsBadLoops) {
   const BhLoop loop{h, b};
   EXPECT_HYST_ERROR(fit_jiles_atherton(std::span(&loop, 1), {}, {}),
                     "loops[0] has 3 samples, at least 8 needed");
+}
+
+TEST(FitJilesAtherton, RejectsBadOptions) {
+  std::vector<double> h, b;
+  for (int i = 0; i < 16; ++i) {
+    h.push_back(std::cos(0.4 * i));
+    b.push_back(std::tanh(2.0 * h.back()));
+  }
+  const BhLoop loop{h, b};
+  JilesAthertonFitOptions options;
+  options.max_field_step = -1.0;
+  EXPECT_HYST_ERROR(fit_jiles_atherton(std::span(&loop, 1), {}, options),
+                    "max_field_step = -1 must be finite and >= 0");
+  options.max_field_step = 0.0;
+  options.function_tolerance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_HYST_ERROR(fit_jiles_atherton(std::span(&loop, 1), {}, options),
+                    "function_tolerance = nan must be finite and > 0");
 }
 
 }  // namespace
