@@ -89,6 +89,9 @@ void bind_registry(py::module_& module) {
       .def_readonly("type", &ParameterInfo::type)
       .def_readonly("unit", &ParameterInfo::unit)
       .def_readonly("description", &ParameterInfo::description)
+      .def_readonly("default", &ParameterInfo::default_value,
+                    "the value taken when the field is left out (text); empty when it must be "
+                    "given or the description says what leaving it out means")
       .def("__repr__", [](const ParameterInfo& p) {
         return fmt::format("ParameterInfo(name='{}', type='{}', unit='{}')", p.name, p.type,
                            p.unit);

@@ -186,3 +186,24 @@ def test_one_validation_rule_on_the_piezo_amplitudes():
     assert "validation align 'none'" in default.validation_rule
     with pytest.raises(hyst.Error, match="validation start 'hot' is not known"):
         hyst.fit("pi", v15, y15, v1, y1, validation_start="hot")
+
+
+def test_schema_defaults_and_every_gpi_fit_option_from_python():
+    """Defaults come from the options' table; bounds and starts are keyword arguments."""
+    gpi = hyst.model_entry("gpi")
+    options = {o.name: o for o in gpi.fit_options}
+    assert {"starts", "lower", "upper", "screening_iterations", "function_tolerance"} <= set(options)
+    assert options["screening_iterations"].default == "15"
+    assert options["initial_state"].default == "rest"
+    assert {p.name: p.default for p in hyst.model_entry("pi").parameters}["offset"] == "0"
+
+    v = np.sin(np.linspace(0.0, 4.0 * np.pi, 400))
+    y = np.tanh(2.0 * v)
+    with pytest.raises(hyst.Error, match=r"fit options\.lower\.a9: unknown field"):
+        hyst.fit("gpi", v, y, lower={"a9": 1.0})
+    with pytest.raises(hyst.Error, match="GPI fit bounds of tau"):
+        hyst.fit("gpi", v, y, lower={"tau": 2.0}, upper={"tau": 1.0})
+    model, report = hyst.fit("gpi", v, y, m=4, screening_iterations=1, max_iterations=5,
+                             function_tolerance=1e-6, upper={"tau": 0.5})
+    # Default screening alone runs 15 iterations from each of the data-derived starts.
+    assert model.name == "gpi" and report.iterations <= 20

@@ -99,27 +99,51 @@ std::vector<double> JsonFields::numbers(std::string_view key) {
   return numbers;
 }
 
-std::size_t JsonFields::count(std::string_view key) {
-  const auto& value = require(key);
+namespace {
+
+std::size_t json_count(const nlohmann::json& value, const std::string& path) {
   if (!value.is_number_integer() || value.get<long long>() < 0) {
-    throw Error(fmt::format("{}: expected a non-negative whole number, got {}", path_of(key),
+    throw Error(fmt::format("{}: expected a non-negative whole number, got {}", path,
                             describe_json(value)));
   }
   return value.get<std::size_t>();
+}
+
+}  // namespace
+
+std::size_t JsonFields::count(std::string_view key) {
+  return json_count(require(key), path_of(key));
+}
+
+std::vector<std::size_t> JsonFields::counts(std::string_view key) {
+  const auto& value = require(key);
+  if (!value.is_array()) {
+    throw Error(fmt::format("{}: expected an array of whole numbers, got {}", path_of(key),
+                            describe_json(value)));
+  }
+  std::vector<std::size_t> counts;
+  counts.reserve(value.size());
+  for (std::size_t j = 0; j < value.size(); ++j) {
+    counts.push_back(json_count(value[j], fmt::format("{}[{}]", path_of(key), j)));
+  }
+  return counts;
 }
 
 std::size_t JsonFields::count_or(std::string_view key, std::size_t fallback) {
   return has(key) ? count(key) : fallback;
 }
 
-bool JsonFields::boolean_or(std::string_view key, bool fallback) {
-  const auto* value = raw(key);
-  if (!value) return fallback;
-  if (!value->is_boolean()) {
+bool JsonFields::boolean(std::string_view key) {
+  const auto& value = require(key);
+  if (!value.is_boolean()) {
     throw Error(
-        fmt::format("{}: expected true or false, got {}", path_of(key), describe_json(*value)));
+        fmt::format("{}: expected true or false, got {}", path_of(key), describe_json(value)));
   }
-  return value->get<bool>();
+  return value.get<bool>();
+}
+
+bool JsonFields::boolean_or(std::string_view key, bool fallback) {
+  return has(key) ? boolean(key) : fallback;
 }
 
 std::string JsonFields::string(std::string_view key) {

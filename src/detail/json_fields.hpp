@@ -29,7 +29,9 @@ class JsonFields {
   double number_or(std::string_view key, double fallback);
   std::vector<double> numbers(std::string_view key);
   std::size_t count(std::string_view key);
+  std::vector<std::size_t> counts(std::string_view key);
   std::size_t count_or(std::string_view key, std::size_t fallback);
+  bool boolean(std::string_view key);
   bool boolean_or(std::string_view key, bool fallback);
   std::string string(std::string_view key);
   std::string string_or(std::string_view key, std::string fallback);

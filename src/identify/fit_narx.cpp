@@ -49,6 +49,14 @@ void validate_options(const NarxFitOptions& o) {
         fmt::format("NARX fit regularization = {} must be finite and >= 0", o.regularization),
         "regularization");
   }
+  // Checked before the network is sized (the model checks its own parameters later).
+  for (std::size_t l = 0; l < o.hidden_sizes.size(); ++l) {
+    if (o.hidden_sizes[l] < 1 || o.hidden_sizes[l] > 1000) {
+      throw Error(
+          fmt::format("NARX fit hidden_sizes[{}] = {} must be in 1..1000", l, o.hidden_sizes[l]),
+          fmt::format("hidden_sizes[{}]", l));
+    }
+  }
   if (o.play_thresholds.empty() && o.plays > 100) {
     throw Error(fmt::format("NARX fit plays = {} must be <= 100", o.plays), "plays");
   }

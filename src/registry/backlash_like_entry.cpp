@@ -15,16 +15,15 @@ struct BacklashLikeCodec {
   using Model = BacklashLike;
   static constexpr std::string_view name = "backlash_like";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"a", p.a}, {"c", p.c}, {"b1", p.b1}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.a = fields.number("a");
-    p.c = fields.number("c");
-    p.b1 = fields.number("b1");
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("a", &P::a, "1 / input units", "rate of approach to the branches, > 0")
+            .add("c", &P::c, "output / input units", "slope of the branches, > 0")
+            .add("b1", &P::b1, "output / input units",
+                 "B1 < c; monotone (invertible) iff B1 >= c/2");
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"output", state.output}};
@@ -49,11 +48,14 @@ struct BacklashLikeCodec {
   }
 };
 
+const FieldTable<DuhemFitOptions>& backlash_like_fit_option_table() {
+  using O = DuhemFitOptions;
+  static const auto table = add_multistart_options(FieldTable<O>(Presence::optional));
+  return table;
+}
+
 FitOutcome fit_backlash_like_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  DuhemFitOptions options;
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  fields.finish();
+  auto options = backlash_like_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_backlash_like(request.input, request.output, options);
   return {std::make_unique<ModelAdapter<BacklashLikeCodec>>(result.model, result.initial_state),
@@ -66,14 +68,8 @@ ModelEntry backlash_like_entry() {
   ModelEntry entry;
   entry.name = std::string(BacklashLikeCodec::name);
   entry.description = "backlash-like (Su et al. 2000): w' = a|v'|(c v - w) + B1 v'; exact steps";
-  entry.parameters = {
-      {"a", "number", "1 / input units", "rate of approach to the branches, > 0"},
-      {"c", "number", "output / input units", "slope of the branches, > 0"},
-      {"b1", "number", "output / input units", "B1 < c; monotone (invertible) iff B1 >= c/2"},
-  };
-  entry.fit_options = {
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
-  };
+  entry.parameters = BacklashLikeCodec::parameter_table().schema();
+  entry.fit_options = backlash_like_fit_option_table().schema();
   entry.create = &create_from_json<BacklashLikeCodec>;
   entry.fit = &fit_backlash_like_request;
   entry.example_params = {{"a", 1.0}, {"c", 1.0}, {"b1", 0.6}};

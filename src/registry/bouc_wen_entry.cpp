@@ -18,30 +18,23 @@ struct BoucWenCodec {
   using Model = BoucWen;
   static constexpr std::string_view name = "bouc_wen";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"a", p.a},
-            {"beta", p.beta},
-            {"gamma", p.gamma},
-            {"n", p.n},
-            {"stiffness", p.stiffness},
-            {"alpha_k", p.alpha_k},
-            {"substeps", p.substeps},
-            {"max_input_step", p.max_input_step},
-            {"tolerance", p.tolerance}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.a = fields.number_or("a", p.a);
-    p.beta = fields.number("beta");
-    p.gamma = fields.number("gamma");
-    p.n = fields.number_or("n", p.n);
-    p.stiffness = fields.number_or("stiffness", p.stiffness);
-    p.alpha_k = fields.number_or("alpha_k", p.alpha_k);
-    p.substeps = fields.count_or("substeps", p.substeps);
-    p.max_input_step = fields.number_or("max_input_step", p.max_input_step);
-    p.tolerance = fields.number_or("tolerance", p.tolerance);
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("a", &P::a, "-", "A > 0", Presence::optional)
+            .add("beta", &P::beta, "", "beta - gamma >= 0 and beta + gamma > 0")
+            .add("gamma", &P::gamma, "", "see beta")
+            .add("n", &P::n, "-", "exponent >= 1", Presence::optional)
+            .add("stiffness", &P::stiffness, "output / input units", "k > 0", Presence::optional)
+            .add("alpha_k", &P::alpha_k, "-", "share of the linear spring in [0, 1]",
+                 Presence::optional)
+            .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
+            .add("max_input_step", &P::max_input_step, "input units", "largest RK4 step, 0 = none",
+                 Presence::optional)
+            .add("tolerance", &P::tolerance, "",
+                 "n != 1, > 0: adaptive Dormand-Prince with this tolerance", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"z", state.hysteretic}};
@@ -74,28 +67,17 @@ struct BoucWenCodec {
   }
 };
 
-BoucWen::Params bouc_wen_params_from_json(const nlohmann::json& params_json,
-                                          const std::string& path) {
-  JsonFields fields(params_json, path);
-  auto params = BoucWenCodec::params_from_json(fields);
-  fields.finish();
-  return params;
-}
-
-std::unique_ptr<DynamicModel> create_bouc_wen(const nlohmann::json& params_json,
-                                              const nlohmann::json* state_json) {
-  return make_dynamic_model<BoucWenCodec>(bouc_wen_params_from_json(params_json, "params"),
-                                          state_json);
+const FieldTable<BoucWenFitOptions>& bouc_wen_fit_option_table() {
+  using O = BoucWenFitOptions;
+  static const auto table = add_multistart_options(
+      FieldTable<O>(Presence::optional)
+          .add("fit_n", &O::fit_n, "", "also fit the exponent n (false: n = 1)")
+          .add("substeps", &O::substeps, "", "RK4 steps per sample"));
+  return table;
 }
 
 FitOutcome fit_bouc_wen_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  BoucWenFitOptions options;
-  options.fit_n = fields.boolean_or("fit_n", options.fit_n);
-  options.substeps = fields.count_or("substeps", options.substeps);
-  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  fields.finish();
+  auto options = bouc_wen_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_bouc_wen(request.input, request.output, options);
   return {std::make_unique<ModelAdapter<BoucWenCodec>>(result.model, result.initial_state),
@@ -109,25 +91,9 @@ ModelEntry bouc_wen_entry() {
   entry.name = std::string(BoucWenCodec::name);
   entry.description =
       "Bouc-Wen: F = alpha_k k x + (1 - alpha_k) k z, bounded class; RK4 in the input; Ceres fit";
-  entry.parameters = {
-      {"a", "number", "-", "A > 0 (default 1)"},
-      {"beta", "number", "", "beta - gamma >= 0 and beta + gamma > 0"},
-      {"gamma", "number", "", "see beta"},
-      {"n", "number", "-", "exponent >= 1 (default 1)"},
-      {"stiffness", "number", "output / input units", "k > 0 (default 1)"},
-      {"alpha_k", "number", "-", "share of the linear spring in [0, 1] (default 0.5)"},
-      {"substeps", "whole number", "", "minimum RK4 steps per sample (20)"},
-      {"max_input_step", "number", "input units", "largest RK4 step, 0 = none (0)"},
-      {"tolerance", "number", "", "n != 1, > 0: adaptive Dormand-Prince with this tolerance (0)"},
-  };
-  entry.fit_options = {
-      {"fit_n", "boolean", "", "also fit the exponent n (false: n = 1)"},
-      {"substeps", "whole number", "", "RK4 steps per sample (20)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
-      {"global_evaluations", "whole number", "",
-       "cost evaluations of the global search before the local starts, 0 = none (300)"},
-  };
-  entry.create = &create_bouc_wen;
+  entry.parameters = BoucWenCodec::parameter_table().schema();
+  entry.fit_options = bouc_wen_fit_option_table().schema();
+  entry.create = &create_from_json<BoucWenCodec>;
   entry.fit = &fit_bouc_wen_request;
   entry.example_params = {{"a", 1.0}, {"beta", 0.6},      {"gamma", 0.2},
                           {"n", 1.5}, {"stiffness", 1.0}, {"alpha_k", 0.3}};

@@ -15,39 +15,25 @@ struct BoucWenOscillatorCodec {
   using Model = BoucWenOscillator;
   static constexpr std::string_view name = "bouc_wen_oscillator";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"mass", p.mass},
-            {"damping", p.damping},
-            {"stiffness", p.stiffness},
-            {"alpha", p.alpha},
-            {"beta", p.beta},
-            {"gamma", p.gamma},
-            {"delta", p.delta},
-            {"nu", p.nu},
-            {"sample_time", p.sample_time},
-            {"substeps", p.substeps},
-            {"tolerance", p.tolerance},
-            {"input_between_samples", std::string(to_string(p.input_between_samples))}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.mass = fields.number("mass");
-    p.damping = fields.number("damping");
-    p.stiffness = fields.number("stiffness");
-    p.alpha = fields.number("alpha");
-    p.beta = fields.number("beta");
-    p.gamma = fields.number("gamma");
-    p.delta = fields.number("delta");
-    p.nu = fields.number_or("nu", p.nu);
-    p.sample_time = fields.number("sample_time");
-    p.substeps = fields.count_or("substeps", p.substeps);
-    p.tolerance = fields.number_or("tolerance", p.tolerance);
-    if (fields.has("input_between_samples")) {
-      p.input_between_samples =
-          fields.parsed("input_between_samples", input_between_samples_from_string);
-    }
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("mass", &P::mass, "kg", "m > 0")
+            .add("damping", &P::damping, "N s/m", "c >= 0")
+            .add("stiffness", &P::stiffness, "N/m", "k >= 0")
+            .add("alpha", &P::alpha, "N/m", "> 0")
+            .add("beta", &P::beta, "", ">= 0 (gauge: only beta gamma and beta delta matter)")
+            .add("gamma", &P::gamma, "-", "any")
+            .add("delta", &P::delta, "-", "any")
+            .add("nu", &P::nu, "-", ">= 1", Presence::optional)
+            .add("sample_time", &P::sample_time, "s", "Ts > 0 (benchmark: 1/750)")
+            .add("substeps", &P::substeps, "", "RK4 steps per sample", Presence::optional)
+            .add("tolerance", &P::tolerance, "",
+                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional)
+            .add("input_between_samples", &P::input_between_samples,
+                 input_between_samples_from_string, "linear or hold", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& s) {
     return {{"displacement", s.displacement},
@@ -80,15 +66,28 @@ struct BoucWenOscillatorCodec {
   }
 };
 
-FitOutcome fit_bouc_wen_oscillator_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
+// 20 RK4 steps per sample unless asked otherwise: a record given to `hyst fit` may be sampled
+// more coarsely than the benchmark the C++ default is set for.
+BoucWenOscillatorFitOptions with_substeps(std::size_t substeps) {
   BoucWenOscillatorFitOptions options;
-  options.sample_time = fields.number_or("sample_time", options.sample_time);
-  options.substeps = fields.count_or("substeps", 20);
-  options.fit_nu = fields.boolean_or("fit_nu", options.fit_nu);
-  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  fields.finish();
+  options.substeps = substeps;
+  return options;
+}
+
+const FieldTable<BoucWenOscillatorFitOptions>& bouc_wen_oscillator_fit_option_table() {
+  using O = BoucWenOscillatorFitOptions;
+  static const auto table = add_multistart_options(
+      FieldTable<O>(Presence::optional, with_substeps(20))
+          .add("sample_time", &O::sample_time, "s", "sample time of the record")
+          .add("substeps", &O::substeps, "", "RK4 steps per sample")
+          .add("fit_nu", &O::fit_nu, "", "also fit nu (false: nu = 1)")
+          .add("starts", &O::starts, BoucWenOscillatorCodec::parameter_table(),
+               "starting points (model parameters); default: derived from the data"));
+  return table;
+}
+
+FitOutcome fit_bouc_wen_oscillator_request(const FitRequest& request) {
+  auto options = bouc_wen_oscillator_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_bouc_wen_oscillator(request.input, request.output, options);
   auto state = result.model.initial_state();
@@ -104,28 +103,8 @@ ModelEntry bouc_wen_oscillator_entry() {
   entry.name = std::string(BoucWenOscillatorCodec::name);
   entry.description =
       "Bouc-Wen oscillator (identification benchmark): force in, displacement out; Ceres fit";
-  entry.parameters = {
-      {"mass", "number", "kg", "m > 0"},
-      {"damping", "number", "N s/m", "c >= 0"},
-      {"stiffness", "number", "N/m", "k >= 0"},
-      {"alpha", "number", "N/m", "> 0"},
-      {"beta", "number", "", ">= 0 (gauge: only beta gamma and beta delta matter)"},
-      {"gamma", "number", "-", "any"},
-      {"delta", "number", "-", "any"},
-      {"nu", "number", "-", ">= 1 (default 1)"},
-      {"sample_time", "number", "s", "Ts > 0 (benchmark: 1/750)"},
-      {"substeps", "whole number", "", "RK4 steps per sample (20)"},
-      {"tolerance", "number", "", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
-      {"input_between_samples", "string", "", "linear (default) or hold"},
-  };
-  entry.fit_options = {
-      {"sample_time", "number", "s", "sample time of the record (1/750)"},
-      {"substeps", "whole number", "", "RK4 steps per sample (20)"},
-      {"fit_nu", "boolean", "", "also fit nu (false: nu = 1)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (1000)"},
-      {"global_evaluations", "whole number", "",
-       "cost evaluations of the global search before the local starts, 0 = none (300)"},
-  };
+  entry.parameters = BoucWenOscillatorCodec::parameter_table().schema();
+  entry.fit_options = bouc_wen_oscillator_fit_option_table().schema();
   entry.create = &create_from_json<BoucWenOscillatorCodec>;
   entry.fit = &fit_bouc_wen_oscillator_request;
   const auto p = BoucWenOscillator::benchmark();

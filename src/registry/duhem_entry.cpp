@@ -14,28 +14,22 @@ struct DuhemCodec {
   using Model = Duhem;
   static constexpr std::string_view name = "duhem";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"alpha", p.alpha},
-            {"f_slope", p.f_slope},
-            {"f_sat", p.f_sat},
-            {"v_sat", p.v_sat},
-            {"g_peak", p.g_peak},
-            {"substeps", p.substeps},
-            {"max_input_step", p.max_input_step},
-            {"tolerance", p.tolerance}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.alpha = fields.number("alpha");
-    p.f_slope = fields.number("f_slope");
-    p.f_sat = fields.number("f_sat");
-    p.v_sat = fields.number("v_sat");
-    p.g_peak = fields.number("g_peak");
-    p.substeps = fields.count_or("substeps", p.substeps);
-    p.max_input_step = fields.number_or("max_input_step", p.max_input_step);
-    p.tolerance = fields.number_or("tolerance", p.tolerance);
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("alpha", &P::alpha, "1 / input units", "> 0")
+            .add("f_slope", &P::f_slope, "output / input units", "linear part of f, >= 0")
+            .add("f_sat", &P::f_sat, "output units", "saturating part of f, >= 0")
+            .add("v_sat", &P::v_sat, "input units", "saturation scale, > 0")
+            .add("g_peak", &P::g_peak, "output / input units",
+                 "peak of g above f_slope, <= f_sat / v_sat")
+            .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
+            .add("max_input_step", &P::max_input_step, "input units",
+                 "largest RK4 step, 0 = automatic: 1 / alpha", Presence::optional)
+            .add("tolerance", &P::tolerance, "",
+                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"output", state.output}};
@@ -66,13 +60,15 @@ struct DuhemCodec {
   }
 };
 
+const FieldTable<DuhemFitOptions>& duhem_fit_option_table() {
+  using O = DuhemFitOptions;
+  static const auto table = add_multistart_options(
+      FieldTable<O>(Presence::optional).add("substeps", &O::substeps, "", "RK4 steps per sample"));
+  return table;
+}
+
 FitOutcome fit_duhem_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  DuhemFitOptions options;
-  options.substeps = fields.count_or("substeps", options.substeps);
-  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  fields.finish();
+  auto options = duhem_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_duhem(request.input, request.output, options);
   return {std::make_unique<ModelAdapter<DuhemCodec>>(result.model, result.initial_state),
@@ -86,22 +82,8 @@ ModelEntry duhem_entry() {
   entry.name = std::string(DuhemCodec::name);
   entry.description =
       "Duhem (Coleman-Hodgdon): y' = alpha|v'|(f(v) - y) + g(v) v'; RK4 in the input; Ceres fit";
-  entry.parameters = {
-      {"alpha", "number", "1 / input units", "> 0"},
-      {"f_slope", "number", "output / input units", "linear part of f, >= 0"},
-      {"f_sat", "number", "output units", "saturating part of f, >= 0"},
-      {"v_sat", "number", "input units", "saturation scale, > 0"},
-      {"g_peak", "number", "output / input units", "peak of g above f_slope, <= f_sat / v_sat"},
-      {"substeps", "whole number", "", "minimum RK4 steps per sample (20)"},
-      {"max_input_step", "number", "input units", "largest RK4 step, 0 = automatic: 1 / alpha (0)"},
-      {"tolerance", "number", "", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
-  };
-  entry.fit_options = {
-      {"substeps", "whole number", "", "RK4 steps per sample (20)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
-      {"global_evaluations", "whole number", "",
-       "cost evaluations of the global search before the local starts, 0 = none (300)"},
-  };
+  entry.parameters = DuhemCodec::parameter_table().schema();
+  entry.fit_options = duhem_fit_option_table().schema();
   entry.create = &create_from_json<DuhemCodec>;
   entry.fit = &fit_duhem_request;
   entry.example_params = {

@@ -6,44 +6,42 @@
 
 #include <fmt/format.h>
 
-#include "../detail/json_fields.hpp"
+#include "field_table.hpp"
 #include "hyst/core/error.hpp"
 #include "tabulated_preisach_model.hpp"
 
 namespace hyst {
 
+namespace {
+
+const detail::FieldTable<PreisachForcFitOptions>& forc_fit_option_table() {
+  using O = PreisachForcFitOptions;
+  using detail::Presence;
+  static const auto table =
+      detail::FieldTable<O>(Presence::optional)
+          .add("intervals", &O::intervals, "",
+               "K: uniform table levels x_0 .. x_K, K(K+1)/2 cell weights")
+          .add("lower", &O::lower, "input units",
+               "lower end of the table (default: the lowest field of all curves)")
+          .add("upper", &O::upper, "input units",
+               "upper end of the table (default: the largest field of all curves; set it to HSat "
+               "when relays may switch up above the largest measured field)")
+          .add("saturation", &O::saturation, preisach_initial_state_from_string,
+               "where every curve starts: positive_saturation (magnetometers) or "
+               "negative_saturation")
+          .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring cell weights")
+          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
+  return table;
+}
+
+}  // namespace
+
 std::vector<ParameterInfo> forc_fit_options() {
-  const PreisachForcFitOptions defaults;
-  return {
-      {"intervals", "whole number", "",
-       fmt::format("K: uniform table levels x_0 .. x_K, K(K+1)/2 cell weights ({})",
-                   defaults.intervals)},
-      {"lower", "number", "input units",
-       "lower end of the table (default: the lowest field of all curves)"},
-      {"upper", "number", "input units",
-       "upper end of the table (default: the largest field of all curves; set it to HSat when "
-       "relays may switch up above the largest measured field)"},
-      {"saturation", "string", "",
-       "where every curve starts: positive_saturation (magnetometers; default) or "
-       "negative_saturation"},
-      {"smoothness", "number", "", "Tikhonov weight on neighbouring cell weights (0)"},
-      {"fit_offset", "boolean", "", "fit the output offset (true)"},
-  };
+  return forc_fit_option_table().schema();
 }
 
 PreisachForcFitOptions forc_fit_options_from_json(const nlohmann::json& options) {
-  detail::JsonFields fields(options, "fit options");
-  PreisachForcFitOptions result;
-  result.intervals = fields.count_or("intervals", result.intervals);
-  if (fields.has("lower")) result.lower = fields.number("lower");
-  if (fields.has("upper")) result.upper = fields.number("upper");
-  if (fields.has("saturation")) {
-    result.saturation = fields.parsed("saturation", preisach_initial_state_from_string);
-  }
-  result.smoothness = fields.number_or("smoothness", result.smoothness);
-  result.fit_offset = fields.boolean_or("fit_offset", result.fit_offset);
-  fields.finish();
-  return result;
+  return forc_fit_option_table().read(options, "fit options");
 }
 
 std::vector<std::size_t> every_nth_curve(std::size_t curves, std::size_t n) {

@@ -117,17 +117,102 @@ std::unique_ptr<DynamicModel> create_generalized_prandtl_ishlinskii(
   });
 }
 
-GpiFitOptions generalized_prandtl_ishlinskii_fit_options(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  GpiFitOptions options;
-  options.m = fields.count_or("m", options.m);
-  if (fields.has("initial_state")) {
-    options.initial_state = fields.parsed("initial_state", gpi_initial_state_from_string);
+// {"a0": ..., "tau": ...}: values by GPI parameter name (GpiParameter's spelling); with
+// `every_one`, all eleven must be given.
+using GpiBoundOverrides = std::array<std::optional<double>, kGpiParameterCount>;
+
+GpiBoundOverrides gpi_values_from_json(const nlohmann::json& json, const std::string& path,
+                                       bool every_one) {
+  JsonFields fields(json, path);
+  GpiBoundOverrides values{};
+  for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
+    const auto name = to_string(static_cast<GpiParameter>(i));
+    if (every_one || fields.has(name)) values[i] = fields.number(name);
   }
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  if (fields.has("input_min")) options.input_min = fields.number("input_min");
-  if (fields.has("input_max")) options.input_max = fields.number("input_max");
   fields.finish();
+  return values;
+}
+
+template <class Values>
+nlohmann::json gpi_values_to_json(const Values& values) {
+  auto json = nlohmann::json::object();
+  for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
+    const std::optional<double> value = values[i];
+    if (value) json[std::string(to_string(static_cast<GpiParameter>(i)))] = *value;
+  }
+  return json;
+}
+
+// "lower" or "upper": bound overrides by parameter name.
+void add_gpi_bounds(FieldTable<GpiFitOptions>& table, std::string_view name,
+                    GpiBoundOverrides GpiFitOptions::*member) {
+  const std::string key(name);
+  table.add_custom(
+      {key,
+       "object",
+       "",
+       fmt::format("{} bounds by parameter, e.g. {{\"tau\": 0, \"alpha\": 1e-4}} (default: "
+                   "scaled to the data; rho is the gauge and keeps its start value)",
+                   name),
+       {}},
+      Presence::optional,
+      [key, member](JsonFields& fields, GpiFitOptions& options) {
+        options.*member = gpi_values_from_json(*fields.raw(key), fields.path_of(key), false);
+      },
+      [key, member](const GpiFitOptions& options, nlohmann::json& json) {
+        json[key] = gpi_values_to_json(options.*member);
+      });
+}
+
+const FieldTable<GpiFitOptions>& generalized_prandtl_ishlinskii_fit_option_table() {
+  using O = GpiFitOptions;
+  static const auto table = [] {
+    FieldTable<O> table(Presence::optional);
+    table.add("m", &O::m, "", "operators j = 0..m")
+        .add("initial_state", &O::initial_state, gpi_initial_state_from_string,
+             "rest (at the first input, rising) or periodic")
+        .add("input_min", &O::input_min, "input units", "operating range (default: the data's)")
+        .add("input_max", &O::input_max, "input units", "operating range (default: the data's)")
+        .add_custom(
+            {"starts",
+             "array of objects",
+             "",
+             "starting points {a0, a1, a2, a3, b0, b1, b2, b3, rho, tau, alpha} (default: "
+             "derived from the data)",
+             {}},
+            Presence::optional,
+            [](JsonFields& fields, O& options) {
+              const auto& list = *fields.raw("starts");
+              if (!list.is_array()) {
+                throw Error(fmt::format("{}: expected an array of objects, got {}",
+                                        fields.path_of("starts"), describe_json(list)));
+              }
+              options.starts.clear();
+              for (std::size_t s = 0; s < list.size(); ++s) {
+                const auto values = gpi_values_from_json(
+                    list[s], fmt::format("{}[{}]", fields.path_of("starts"), s), true);
+                auto& start = options.starts.emplace_back();
+                for (std::size_t i = 0; i < kGpiParameterCount; ++i)
+                  start[i] = *values[i];
+              }
+            },
+            [](const O& options, nlohmann::json& json) {
+              if (options.starts.empty()) return;
+              auto& list = json["starts"] = nlohmann::json::array();
+              for (const auto& start : options.starts)
+                list.push_back(gpi_values_to_json(start));
+            });
+    table = add_multistart_options(std::move(table));
+    add_gpi_bounds(table, "lower", &O::lower);
+    add_gpi_bounds(table, "upper", &O::upper);
+    return table;
+  }();
+  return table;
+}
+
+GpiFitOptions generalized_prandtl_ishlinskii_fit_options(const FitRequest& request) {
+  auto options =
+      generalized_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   return options;
 }
@@ -149,29 +234,29 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
       "generalized Prandtl-Ishlinskii (MSMA): plays on tanh/arctan/linear envelopes, exponential "
       "density; analytic inverse (IGPI); nonlinear fit (Ceres)";
   entry.parameters = {
-      {"envelope", "string", "", "tanh, arctan or linear"},
-      {"ascending", "array of numbers", "",
-       "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)"},
-      {"descending", "array of numbers", "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r"},
-      {"density", "string", "", "exponential (rho, tau, alpha, m) or free (thresholds, weights)"},
-      {"rho", "number", "", "exponential density p_j = rho exp(-tau r_j), rho > 0"},
-      {"tau", "number", "1 / envelope units", "decay of the density"},
-      {"alpha", "number", "envelope units", "threshold spacing r_j = alpha j, alpha > 0"},
-      {"m", "whole number", "", "operators j = 0..m"},
-      {"thresholds", "array of numbers", "envelope units", "free density: 0 = r_0 < r_1 < ..."},
-      {"weights", "array of numbers", "", "free density: p_j"},
-      {"input_min", "number", "input units", "operating range (ordering checked on it)"},
-      {"input_max", "number", "input units", "operating range"},
-      {"initial_input", "number", "input units", "at rest there initially (default 0)"},
+      {"envelope", "string", "", "tanh, arctan or linear", {}},
+      {"ascending",
+       "array of numbers",
+       "",
+       "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)",
+       {}},
+      {"descending", "array of numbers", "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r", {}},
+      {"density",
+       "string",
+       "",
+       "exponential (rho, tau, alpha, m) or free (thresholds, weights)",
+       {}},
+      {"rho", "number", "", "exponential density p_j = rho exp(-tau r_j), rho > 0", {}},
+      {"tau", "number", "1 / envelope units", "decay of the density", {}},
+      {"alpha", "number", "envelope units", "threshold spacing r_j = alpha j, alpha > 0", {}},
+      {"m", "whole number", "", "operators j = 0..m", {}},
+      {"thresholds", "array of numbers", "envelope units", "free density: 0 = r_0 < r_1 < ...", {}},
+      {"weights", "array of numbers", "", "free density: p_j", {}},
+      {"input_min", "number", "input units", "operating range (ordering checked on it)", {}},
+      {"input_max", "number", "input units", "operating range", {}},
+      {"initial_input", "number", "input units", "at rest there initially (default 0)", {}},
   };
-  entry.fit_options = {
-      {"m", "whole number", "", "operators j = 0..m (10)"},
-      {"initial_state", "string", "", "rest (at the first input, rising) or periodic"},
-      {"max_iterations", "whole number", "",
-       "Levenberg-Marquardt iterations of the best start (3000)"},
-      {"input_min", "number", "input units", "operating range (default: the data's)"},
-      {"input_max", "number", "input units", "operating range (default: the data's)"},
-  };
+  entry.fit_options = generalized_prandtl_ishlinskii_fit_option_table().schema();
   entry.create = &create_generalized_prandtl_ishlinskii;
   entry.fit = &fit_generalized_prandtl_ishlinskii_request;
   // The parameter set of the reference checks (pi_check.py).

@@ -14,12 +14,26 @@ struct IkutaSmaCodec {
   using Model = IkutaSma;
   static constexpr std::string_view name = "ikuta_sma";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"martensite_finish", p.martensite_finish}, {"martensite_start", p.martensite_start},
-            {"austenite_start", p.austenite_start},     {"austenite_finish", p.austenite_finish},
-            {"output_austenite", p.output_austenite},   {"output_martensite", p.output_martensite},
-            {"initial_fraction", p.initial_fraction},   {"initial_input", p.initial_input}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table = FieldTable<P>()
+                                  .add("martensite_finish", &P::martensite_finish, "input units",
+                                       "M_f: cooling transformation ends (< M_s)")
+                                  .add("martensite_start", &P::martensite_start, "input units",
+                                       "M_s: cooling transformation starts")
+                                  .add("austenite_start", &P::austenite_start, "input units",
+                                       "A_s: heating transformation starts (>= M_f)")
+                                  .add("austenite_finish", &P::austenite_finish, "input units",
+                                       "A_f: heating transformation ends (>= M_s)")
+                                  .add("output_austenite", &P::output_austenite, "output units",
+                                       "y_A: output at martensite fraction 0")
+                                  .add("output_martensite", &P::output_martensite, "output units",
+                                       "y_M: output at martensite fraction 1")
+                                  .add("initial_fraction", &P::initial_fraction, "",
+                                       "martensite fraction at rest, in [0, 1]", Presence::optional)
+                                  .add("initial_input", &P::initial_input, "input units",
+                                       "input of the initial rest state", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"fraction", state.fraction},
@@ -54,28 +68,6 @@ struct IkutaSmaCodec {
   }
 };
 
-IkutaSma::Params ikuta_sma_params_from_json(const nlohmann::json& params_json,
-                                            const std::string& path) {
-  JsonFields fields(params_json, path);
-  IkutaSma::Params params;
-  params.martensite_finish = fields.number("martensite_finish");
-  params.martensite_start = fields.number("martensite_start");
-  params.austenite_start = fields.number("austenite_start");
-  params.austenite_finish = fields.number("austenite_finish");
-  params.output_austenite = fields.number("output_austenite");
-  params.output_martensite = fields.number("output_martensite");
-  params.initial_fraction = fields.number_or("initial_fraction", params.initial_fraction);
-  params.initial_input = fields.number_or("initial_input", params.initial_input);
-  fields.finish();
-  return params;
-}
-
-std::unique_ptr<DynamicModel> create_ikuta_sma(const nlohmann::json& params_json,
-                                               const nlohmann::json* state_json) {
-  return make_dynamic_model<IkutaSmaCodec>(ikuta_sma_params_from_json(params_json, "params"),
-                                           state_json);
-}
-
 }  // namespace
 
 ModelEntry ikuta_sma_entry() {
@@ -83,17 +75,8 @@ ModelEntry ikuta_sma_entry() {
   entry.name = std::string(IkutaSmaCodec::name);
   entry.description =
       "Ikuta SMA model: cosine phase-fraction branches, local memory (no internal loops)";
-  entry.parameters = {
-      {"martensite_finish", "number", "input units", "M_f: cooling transformation ends (< M_s)"},
-      {"martensite_start", "number", "input units", "M_s: cooling transformation starts"},
-      {"austenite_start", "number", "input units", "A_s: heating transformation starts (>= M_f)"},
-      {"austenite_finish", "number", "input units", "A_f: heating transformation ends (>= M_s)"},
-      {"output_austenite", "number", "output units", "y_A: output at martensite fraction 0"},
-      {"output_martensite", "number", "output units", "y_M: output at martensite fraction 1"},
-      {"initial_fraction", "number", "", "martensite fraction at rest, in [0, 1] (default 1)"},
-      {"initial_input", "number", "input units", "input of the initial rest state (default 0)"},
-  };
-  entry.create = &create_ikuta_sma;
+  entry.parameters = IkutaSmaCodec::parameter_table().schema();
+  entry.create = &create_from_json<IkutaSmaCodec>;
   entry.example_params = {{"martensite_finish", -0.8}, {"martensite_start", 0.2},
                           {"austenite_start", -0.2},   {"austenite_finish", 0.8},
                           {"output_austenite", 1.0},   {"output_martensite", -1.0},

@@ -15,30 +15,22 @@ struct JilesAthertonCodec {
   using Model = JilesAtherton;
   static constexpr std::string_view name = "jiles_atherton";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"ms", p.ms},
-            {"a", p.a},
-            {"k", p.k},
-            {"c", p.c},
-            {"alpha", p.alpha},
-            {"variant", std::string(to_string(p.variant))},
-            {"max_field_step", p.max_field_step},
-            {"tolerance", p.tolerance}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.ms = fields.number("ms");
-    p.a = fields.number("a");
-    p.k = fields.number("k");
-    p.c = fields.number("c");
-    p.alpha = fields.number("alpha");
-    if (fields.has("variant")) {
-      p.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
-    }
-    p.max_field_step = fields.number_or("max_field_step", p.max_field_step);
-    p.tolerance = fields.number_or("tolerance", p.tolerance);
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("ms", &P::ms, "A/m", "saturation magnetisation M_s > 0")
+            .add("a", &P::a, "A/m", "anhysteretic shape, > 0")
+            .add("k", &P::k, "A/m", "pinning, > 0")
+            .add("c", &P::c, "-", "reversibility in [0, 1)")
+            .add("alpha", &P::alpha, "-", "coupling >= 0, alpha M_s / (3 a) < 1")
+            .add("variant", &P::variant, jiles_atherton_variant_from_string,
+                 "original or venkataraman (COMSOL, Altair Flux)", Presence::optional)
+            .add("max_field_step", &P::max_field_step, "A/m", "largest RK4 step in H, 0 = k / 50",
+                 Presence::optional)
+            .add("tolerance", &P::tolerance, "A/m",
+                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"field", state.field},
@@ -78,20 +70,31 @@ struct JilesAthertonCodec {
   }
 };
 
-FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
+// The entry's default differs from the C++ options': a record given to `hyst fit` starts
+// demagnetised unless the user says it is one loop in steady state.
+JilesAthertonFitOptions demagnetised_start() {
   JilesAthertonFitOptions options;
-  if (fields.has("variant")) {
-    options.variant = fields.parsed("variant", jiles_atherton_variant_from_string);
-  }
-  options.periodic = fields.boolean_or("periodic", false);
-  options.global_evaluations = fields.count_or("global_evaluations", options.global_evaluations);
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  options.screening_iterations =
-      fields.count_or("screening_iterations", options.screening_iterations);
-  options.max_field_step = fields.number_or("max_field_step", options.max_field_step);
-  options.function_tolerance = fields.number_or("function_tolerance", options.function_tolerance);
-  fields.finish();
+  options.periodic = false;
+  return options;
+}
+
+const FieldTable<JilesAthertonFitOptions>& jiles_atherton_fit_option_table() {
+  using O = JilesAthertonFitOptions;
+  static const auto table = add_multistart_options(
+      FieldTable<O>(Presence::optional, demagnetised_start())
+          .add("variant", &O::variant, jiles_atherton_variant_from_string,
+               "original or venkataraman")
+          .add("periodic", &O::periodic, "",
+               "the record is one loop in steady state (false: demagnetised)")
+          .add("max_field_step", &O::max_field_step, "A/m",
+               "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000")
+          .add("starts", &O::starts, JilesAthertonCodec::parameter_table(),
+               "starting points {ms, a, k, c, alpha}; default: derived from the data"));
+  return table;
+}
+
+FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
+  const auto options = jiles_atherton_fit_option_table().read(request.options, "fit options");
   if (!(request.validate_fraction >= 0.0 && request.validate_fraction < 1.0)) {
     throw Error(fmt::format("validate_fraction = {} must be in [0, 1)", request.validate_fraction),
                 "validate_fraction");
@@ -122,28 +125,8 @@ ModelEntry jiles_atherton_entry() {
   entry.name = std::string(JilesAthertonCodec::name);
   entry.description =
       "Jiles-Atherton: B(H) of ferromagnets, original or Venkataraman variant; Ceres fit";
-  entry.parameters = {
-      {"ms", "number", "A/m", "saturation magnetisation M_s > 0"},
-      {"a", "number", "A/m", "anhysteretic shape, > 0"},
-      {"k", "number", "A/m", "pinning, > 0"},
-      {"c", "number", "-", "reversibility in [0, 1)"},
-      {"alpha", "number", "-", "coupling >= 0, alpha M_s / (3 a) < 1"},
-      {"variant", "string", "", "original (default) or venkataraman (COMSOL, Altair Flux)"},
-      {"max_field_step", "number", "A/m", "largest RK4 step in H, 0 = k / 50 (0)"},
-      {"tolerance", "number", "A/m", "> 0: adaptive Dormand-Prince with this error tolerance (0)"},
-  };
-  entry.fit_options = {
-      {"variant", "string", "", "original or venkataraman"},
-      {"periodic", "boolean", "", "the record is one loop in steady state (false: demagnetised)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (2000)"},
-      {"screening_iterations", "whole number", "",
-       "iterations of every start before the best one goes on (8)"},
-      {"max_field_step", "number", "A/m",
-       "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000 (0)"},
-      {"function_tolerance", "number", "", "relative cost change that ends the fit (1e-9)"},
-      {"global_evaluations", "whole number", "",
-       "cost evaluations of the global search before the local starts, 0 = none (0)"},
-  };
+  entry.parameters = JilesAthertonCodec::parameter_table().schema();
+  entry.fit_options = jiles_atherton_fit_option_table().schema();
   entry.create = &create_from_json<JilesAthertonCodec>;
   entry.fit = &fit_jiles_atherton_request;
   entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},

@@ -16,10 +16,19 @@ struct KpCodec {
   using Model = KrasnoselskiiPokrovskii;
   static constexpr std::string_view name = "kp";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"levels", p.levels},   {"lower", p.lower},           {"upper", p.upper},
-            {"weights", p.weights}, {"ramp_cells", p.ramp_cells}, {"offset", p.offset}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("levels", &P::levels, "", "N cells: N(N+1)/2 kernels")
+            .add("lower", &P::lower, "input units", "lower end of the grid (all kernels -1 below)")
+            .add("upper", &P::upper, "input units", "upper end of the grid (all kernels +1 above)")
+            .add("weights", &P::weights, "output units",
+                 "mu >= 0 per kernel, kernel (i, j) at index i(i+1)/2 + j")
+            .add("ramp_cells", &P::ramp_cells, "", "ramp width of the kernels in cells",
+                 Presence::optional)
+            .add("offset", &P::offset, "output units", "y_off", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"kernels", state.kernels}};
@@ -44,35 +53,20 @@ struct KpCodec {
   }
 };
 
-KrasnoselskiiPokrovskii::Params krasnoselskii_pokrovskii_params_from_json(
-    const nlohmann::json& params_json, const std::string& path) {
-  JsonFields fields(params_json, path);
-  KrasnoselskiiPokrovskii::Params params;
-  params.levels = fields.count("levels");
-  params.lower = fields.number("lower");
-  params.upper = fields.number("upper");
-  params.weights = fields.numbers("weights");
-  params.ramp_cells = fields.number_or("ramp_cells", params.ramp_cells);
-  params.offset = fields.number_or("offset", 0.0);
-  fields.finish();
-  return params;
-}
-
-std::unique_ptr<DynamicModel> create_krasnoselskii_pokrovskii(const nlohmann::json& params_json,
-                                                              const nlohmann::json* state_json) {
-  return make_dynamic_model<KpCodec>(
-      krasnoselskii_pokrovskii_params_from_json(params_json, "params"), state_json);
+const FieldTable<KpFitOptions>& krasnoselskii_pokrovskii_fit_option_table() {
+  using O = KpFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("levels", &O::levels, "", "N cells")
+          .add("lower", &O::lower, "input units", "grid range (default: the data's)")
+          .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+          .add("ramp_cells", &O::ramp_cells, "", "ramp width in cells")
+          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
+  return table;
 }
 
 FitOutcome fit_krasnoselskii_pokrovskii_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  KpFitOptions options;
-  options.levels = fields.count_or("levels", options.levels);
-  if (fields.has("lower")) options.lower = fields.number("lower");
-  if (fields.has("upper")) options.upper = fields.number("upper");
-  options.ramp_cells = fields.number_or("ramp_cells", options.ramp_cells);
-  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
-  fields.finish();
+  auto options = krasnoselskii_pokrovskii_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_krasnoselskii_pokrovskii(request.input, request.output, options);
   auto initial = result.model.initial_state();
@@ -88,23 +82,9 @@ ModelEntry krasnoselskii_pokrovskii_entry() {
   entry.description =
       "Krasnosel'skii-Pokrovskii: ramped relays on a triangular grid, continuous output; weights "
       "by NNLS";
-  entry.parameters = {
-      {"levels", "whole number", "", "N cells: N(N+1)/2 kernels"},
-      {"lower", "number", "input units", "lower end of the grid (all kernels -1 below)"},
-      {"upper", "number", "input units", "upper end of the grid (all kernels +1 above)"},
-      {"weights", "array of numbers", "output units",
-       "mu >= 0 per kernel, kernel (i, j) at index i(i+1)/2 + j"},
-      {"ramp_cells", "number", "", "ramp width of the kernels in cells (default 1)"},
-      {"offset", "number", "output units", "y_off (default 0)"},
-  };
-  entry.fit_options = {
-      {"levels", "whole number", "", "N cells (12)"},
-      {"lower", "number", "input units", "grid range (default: the data's)"},
-      {"upper", "number", "input units", "grid range (default: the data's)"},
-      {"ramp_cells", "number", "", "ramp width in cells (1)"},
-      {"fit_offset", "boolean", "", "fit the output offset (true)"},
-  };
-  entry.create = &create_krasnoselskii_pokrovskii;
+  entry.parameters = KpCodec::parameter_table().schema();
+  entry.fit_options = krasnoselskii_pokrovskii_fit_option_table().schema();
+  entry.create = &create_from_json<KpCodec>;
   entry.fit = &fit_krasnoselskii_pokrovskii_request;
   entry.example_params = {{"levels", 6},       {"lower", -1.0},
                           {"upper", 1.0},      {"weights", std::vector<double>(21, 1.0 / 21.0)},

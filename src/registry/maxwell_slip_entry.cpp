@@ -17,17 +17,37 @@ nlohmann::json inverse_state_to_json(const InversePrandtlIshlinskii::State& stat
   return {{"play", state.play}};
 }
 
+// "clockwise" or "counter-clockwise"; an error names the field as the model's own check does.
+MaxwellSlip::Orientation orientation_field(JsonFields& fields) {
+  return parse_orientation(fields.string("orientation"), fields.path_of("orientation"));
+}
+
 struct MaxwellSlipCodec {
   using Model = MaxwellSlip;
   static constexpr std::string_view name = "maxwell_slip";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"stiffness", p.stiffness},
-            {"break_away", p.break_away},
-            {"linear_stiffness", p.linear_stiffness},
-            {"offset", p.offset},
-            {"orientation", orientation_name(p.orientation)}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("stiffness", &P::stiffness, "force / position units", "k_i > 0 of each element")
+            .add("break_away", &P::break_away, "force units",
+                 "f_i > 0 of each element; f_i/k_i strictly increasing")
+            .add("linear_stiffness", &P::linear_stiffness, "force / position units",
+                 "k_lin >= 0 of a parallel spring; > 0 makes the model invertible",
+                 Presence::optional)
+            .add("offset", &P::offset, "force units", "F_off", Presence::optional)
+            .add_custom(
+                {"orientation", "string", "",
+                 "\"clockwise\" (F = F_off + k_lin x + sum k_i delta_i) or \"counter-clockwise\" "
+                 "(F = F_off + k_lin x - sum k_i delta_i)",
+                 "clockwise"},
+                Presence::optional,
+                [](JsonFields& fields, P& p) { p.orientation = orientation_field(fields); },
+                [](const P& p, nlohmann::json& json) {
+                  json["orientation"] = orientation_name(p.orientation);
+                });
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"deflection", state.deflection}, {"input", state.input}};
@@ -70,43 +90,38 @@ struct MaxwellSlipCodec {
   }
 };
 
-MaxwellSlip::Params maxwell_slip_params_from_json(const nlohmann::json& params_json,
-                                                  const std::string& path) {
-  JsonFields fields(params_json, path);
-  MaxwellSlip::Params params;
-  params.stiffness = fields.numbers("stiffness");
-  params.break_away = fields.numbers("break_away");
-  params.linear_stiffness = fields.number_or("linear_stiffness", 0.0);
-  params.offset = fields.number_or("offset", 0.0);
-  if (fields.has("orientation")) {
-    params.orientation =
-        parse_orientation(fields.string("orientation"), fields.path_of("orientation"));
-  }
-  fields.finish();
-  return params;
-}
-
-std::unique_ptr<DynamicModel> create_maxwell_slip(const nlohmann::json& params_json,
-                                                  const nlohmann::json* state_json) {
-  return make_dynamic_model<MaxwellSlipCodec>(maxwell_slip_params_from_json(params_json, "params"),
-                                              state_json);
+const FieldTable<MaxwellSlipFitOptions>& maxwell_slip_fit_option_table() {
+  using O = MaxwellSlipFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("elements", &O::elements, "", "N elements when slip_displacements is not given")
+          .add("slip_displacements", &O::slip_displacements, "position units",
+               "fixed f_i/k_i, increasing (default: uniform up to half the range)")
+          .add("fit_linear_stiffness", &O::fit_linear_stiffness, "", "fit k_lin >= 0")
+          .add("fit_offset", &O::fit_offset, "", "fit the force offset")
+          .add_custom(
+              {"orientation", "string", "",
+               "loop orientation in the (x, F) plane: \"auto\" (the sign of the "
+               "enclosed area, clockwise when the area is 0), \"clockwise\" or "
+               "\"counter-clockwise\"",
+               "auto"},
+              Presence::optional,
+              [](JsonFields& fields, O& options) {
+                if (fields.string("orientation") == "auto") {
+                  options.orientation.reset();
+                } else {
+                  options.orientation = orientation_field(fields);
+                }
+              },
+              [](const O& options, nlohmann::json& json) {
+                json["orientation"] = options.orientation ? orientation_name(*options.orientation)
+                                                          : std::string_view("auto");
+              });
+  return table;
 }
 
 FitOutcome fit_maxwell_slip_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  MaxwellSlipFitOptions options;
-  options.elements = fields.count_or("elements", options.elements);
-  if (fields.has("slip_displacements")) {
-    options.slip_displacements = fields.numbers("slip_displacements");
-  }
-  options.fit_linear_stiffness =
-      fields.boolean_or("fit_linear_stiffness", options.fit_linear_stiffness);
-  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
-  const auto orientation = fields.string_or("orientation", "auto");
-  if (orientation != "auto") {
-    options.orientation = parse_orientation(orientation, fields.path_of("orientation"));
-  }
-  fields.finish();
+  auto options = maxwell_slip_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_maxwell_slip(request.input, request.output, options);
   return {std::make_unique<ModelAdapter<MaxwellSlipCodec>>(std::move(result.model),
@@ -122,28 +137,9 @@ ModelEntry maxwell_slip_entry() {
   entry.description =
       "Maxwell-slip: parallel elasto-slide elements (stop operators), clockwise or "
       "counter-clockwise loops; inverse via the PI form; stiffnesses by NNLS";
-  entry.parameters = {
-      {"stiffness", "array of numbers", "force / position units", "k_i > 0 of each element"},
-      {"break_away", "array of numbers", "force units",
-       "f_i > 0 of each element; f_i/k_i strictly increasing"},
-      {"linear_stiffness", "number", "force / position units",
-       "k_lin >= 0 of a parallel spring (default 0); > 0 makes the model invertible"},
-      {"offset", "number", "force units", "F_off (default 0)"},
-      {"orientation", "string", "",
-       "\"clockwise\" (default: F = F_off + k_lin x + sum k_i delta_i) or \"counter-clockwise\" "
-       "(F = F_off + k_lin x - sum k_i delta_i)"},
-  };
-  entry.fit_options = {
-      {"elements", "whole number", "", "N elements when slip_displacements is not given (10)"},
-      {"slip_displacements", "array of numbers", "position units",
-       "fixed f_i/k_i, increasing (default: uniform up to half the range)"},
-      {"fit_linear_stiffness", "boolean", "", "fit k_lin >= 0 (true)"},
-      {"fit_offset", "boolean", "", "fit the force offset (true)"},
-      {"orientation", "string", "",
-       "loop orientation in the (x, F) plane: \"auto\" (default: the sign of the enclosed "
-       "area, clockwise when the area is 0), \"clockwise\" or \"counter-clockwise\""},
-  };
-  entry.create = &create_maxwell_slip;
+  entry.parameters = MaxwellSlipCodec::parameter_table().schema();
+  entry.fit_options = maxwell_slip_fit_option_table().schema();
+  entry.create = &create_from_json<MaxwellSlipCodec>;
   entry.fit = &fit_maxwell_slip_request;
   entry.example_params = {{"stiffness", {3.0, 2.0, 1.0}},
                           {"break_away", {0.3, 0.4, 0.5}},

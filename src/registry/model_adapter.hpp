@@ -5,6 +5,10 @@
 //   struct Codec {
 //     using Model = ...;
 //     static constexpr std::string_view name = "...";
+//     // Either the table of Model::Params (field_table.hpp), from which the model file's
+//     // "params" and the entry's schema are derived, or, for parameters a table cannot describe
+//     // (fields that depend on others), the conversion itself:
+//     static const FieldTable<typename Model::Params>& parameter_table();
 //     static nlohmann::json params_to_json(const Model&);
 //     static nlohmann::json state_to_json(const Model&, const typename Model::State&);
 //     static typename Model::State state_from_json(const Model&, detail::JsonFields&);
@@ -30,6 +34,7 @@
 #include <fmt/format.h>
 
 #include "../detail/json_fields.hpp"
+#include "field_table.hpp"
 #include "hyst/core/invert.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/registry/dynamic_model.hpp"
@@ -48,7 +53,13 @@ class ModelAdapter final : public DynamicModel {
   std::unique_ptr<DynamicModel> clone() const override {
     return std::make_unique<ModelAdapter>(*this);
   }
-  nlohmann::json params() const override { return Codec::params_to_json(model_); }
+  nlohmann::json params() const override {
+    if constexpr (requires { Codec::parameter_table(); }) {
+      return Codec::parameter_table().write(model_.params());
+    } else {
+      return Codec::params_to_json(model_);
+    }
+  }
   nlohmann::json state() const override { return Codec::state_to_json(model_, state_); }
   void set_state(const nlohmann::json& state) override {
     JsonFields fields(state, "state");
@@ -156,16 +167,25 @@ std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params p
   return adapter;
 }
 
-// The model of a model file's "params" (and "state", may be null) through its codec's
-// params_from_json: every field read, none left over. An entry's `create` for codecs that read
-// their parameters with JsonFields.
+// The parameters of a model file's "params" object (or of another object at `path`) through the
+// codec's parameter table or params_from_json: every field read, none left over.
+template <class Codec>
+typename Codec::Model::Params params_of_json(const nlohmann::json& params_json, std::string path) {
+  if constexpr (requires { Codec::parameter_table(); }) {
+    return Codec::parameter_table().read(params_json, std::move(path));
+  } else {
+    JsonFields fields(params_json, std::move(path));
+    auto params = Codec::params_from_json(fields);
+    fields.finish();
+    return params;
+  }
+}
+
+// The model of a model file's "params" (and "state", may be null): an entry's `create`.
 template <class Codec>
 std::unique_ptr<DynamicModel> create_from_json(const nlohmann::json& params_json,
                                                const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = Codec::params_from_json(fields);
-  fields.finish();
-  return make_dynamic_model<Codec>(std::move(params), state_json);
+  return make_dynamic_model<Codec>(params_of_json<Codec>(params_json, "params"), state_json);
 }
 
 // A state built by `make` (the model's validating make_state), with the state object's path in

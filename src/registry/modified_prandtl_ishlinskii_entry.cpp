@@ -108,23 +108,31 @@ std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann:
   }
 }
 
+const FieldTable<ModifiedPiFitOptions>& modified_prandtl_ishlinskii_fit_option_table() {
+  using O = ModifiedPiFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+          .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+          .add("dead_zones", &O::dead_zones, "", "dead zones per side of the inverse map")
+          .add("dead_zone_thresholds", &O::dead_zone_thresholds, "output units",
+               "thresholds of the inverse dead-zone map around the offset, containing 0")
+          .add("output_offset", &O::output_offset, "output units",
+               "y_off (default: mid-range of the output)")
+          .add("min_weight", &O::min_weight, "",
+               "relative lower bound of p_0 and of the map's slopes")
+          .add("initial_state", &O::initial_state, pi_initial_state_from_string,
+               "virgin (plays at 0) or periodic (one period run first)")
+          .add("clamp_output", &O::clamp_output, "",
+               "limit the output to the fitted record's output range; false = no limits")
+          .add("output_margin", &O::output_margin, "",
+               "widen those limits by this fraction of the output range on each side");
+  return table;
+}
+
 FitOutcome fit_modified_prandtl_ishlinskii_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  ModifiedPiFitOptions options;
-  options.operators = fields.count_or("operators", options.operators);
-  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
-  options.dead_zones = fields.count_or("dead_zones", options.dead_zones);
-  if (fields.has("dead_zone_thresholds")) {
-    options.dead_zone_thresholds = fields.numbers("dead_zone_thresholds");
-  }
-  if (fields.has("output_offset")) options.output_offset = fields.number("output_offset");
-  options.min_weight = fields.number_or("min_weight", options.min_weight);
-  options.clamp_output = fields.boolean_or("clamp_output", options.clamp_output);
-  options.output_margin = fields.number_or("output_margin", options.output_margin);
-  if (fields.has("initial_state")) {
-    options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
-  }
-  fields.finish();
+  auto options =
+      modified_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_modified_prandtl_ishlinskii(request.input, request.output, options);
   return {std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model),
@@ -141,32 +149,32 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
       "modified PI (Kuhnen): PI followed by dead-zone superposition; analytic inverse; weights "
       "by constrained least squares";
   entry.parameters = {
-      {"thresholds", "array of numbers", "input units", "play half-widths 0 = r_0 < r_1 < ..."},
-      {"weights", "array of numbers", "output / input units", "p_j, one per threshold"},
-      {"pi_offset", "number", "output units", "offset of the PI part (default 0)"},
-      {"dead_zone_thresholds", "array of numbers", "output units",
-       "d_i, increasing, one of them 0"},
-      {"dead_zone_weights", "array of numbers", "", "g_i; invertible iff outward partial sums > 0"},
-      {"offset", "number", "output units", "y_off added after the dead zones (default 0)"},
-      {"output_min", "number", "output units",
-       "lower limit the output is clamped to (default: none; a fit sets the record's minimum)"},
-      {"output_max", "number", "output units",
-       "upper limit the output is clamped to (default: none; a fit sets the record's maximum)"},
+      {"thresholds", "array of numbers", "input units", "play half-widths 0 = r_0 < r_1 < ...", {}},
+      {"weights", "array of numbers", "output / input units", "p_j, one per threshold", {}},
+      {"pi_offset", "number", "output units", "offset of the PI part (default 0)", {}},
+      {"dead_zone_thresholds",
+       "array of numbers",
+       "output units",
+       "d_i, increasing, one of them 0",
+       {}},
+      {"dead_zone_weights",
+       "array of numbers",
+       "",
+       "g_i; invertible iff outward partial sums > 0",
+       {}},
+      {"offset", "number", "output units", "y_off added after the dead zones (default 0)", {}},
+      {"output_min",
+       "number",
+       "output units",
+       "lower limit the output is clamped to (default: none; a fit sets the record's minimum)",
+       {}},
+      {"output_max",
+       "number",
+       "output units",
+       "upper limit the output is clamped to (default: none; a fit sets the record's maximum)",
+       {}},
   };
-  entry.fit_options = {
-      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
-      {"thresholds", "array of numbers", "input units", "fixed thresholds (default: uniform)"},
-      {"dead_zones", "whole number", "", "dead zones per side of the inverse map (3)"},
-      {"dead_zone_thresholds", "array of numbers", "output units",
-       "thresholds of the inverse dead-zone map around the offset, containing 0"},
-      {"output_offset", "number", "output units", "y_off (default: mid-range of the output)"},
-      {"min_weight", "number", "", "relative lower bound of p_0 and of the map's slopes (1e-6)"},
-      {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
-      {"clamp_output", "boolean", "",
-       "limit the output to the fitted record's output range (true); false = no limits"},
-      {"output_margin", "number", "",
-       "widen those limits by this fraction of the output range on each side (0)"},
-  };
+  entry.fit_options = modified_prandtl_ishlinskii_fit_option_table().schema();
   entry.create = &create_modified_prandtl_ishlinskii;
   entry.fit = &fit_modified_prandtl_ishlinskii_request;
   entry.example_params = {{"thresholds", {0.0, 0.3, 0.7, 1.0}},

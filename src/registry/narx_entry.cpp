@@ -14,20 +14,6 @@
 namespace hyst::detail {
 namespace {
 
-// An array of whole numbers >= 1 (layer sizes).
-std::vector<std::size_t> sizes(JsonFields& fields, std::string_view key) {
-  const auto values = fields.numbers(key);
-  std::vector<std::size_t> result;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!(values[i] >= 1.0 && values[i] <= 1e6 && std::floor(values[i]) == values[i])) {
-      throw Error(fmt::format("{}[{}] = {}: expected a whole number >= 1", fields.path_of(key), i,
-                              values[i]));
-    }
-    result.push_back(static_cast<std::size_t>(values[i]));
-  }
-  return result;
-}
-
 // Outputs are normalised by y_scale, which the fitter sets from the fit record; a free run a
 // thousand scales away from it has left anything the model describes.
 constexpr double kRunawayScales = 1e3;
@@ -36,30 +22,26 @@ struct NarxCodec {
   using Model = Narx;
   static constexpr std::string_view name = "narx";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"input_lags", p.input_lags},
-            {"output_lags", p.output_lags},
-            {"play_thresholds", p.play_thresholds},
-            {"hidden_sizes", p.hidden_sizes},
-            {"weights", p.weights},
-            {"input_offset", p.input_offset},
-            {"input_scale", p.input_scale},
-            {"output_offset", p.output_offset},
-            {"output_scale", p.output_scale}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params p;
-    p.input_lags = fields.count("input_lags");
-    p.output_lags = fields.count("output_lags");
-    p.play_thresholds = fields.numbers("play_thresholds");
-    p.hidden_sizes = sizes(fields, "hidden_sizes");
-    p.weights = fields.numbers("weights");
-    p.input_offset = fields.number_or("input_offset", 0.0);
-    p.input_scale = fields.number_or("input_scale", 1.0);
-    p.output_offset = fields.number_or("output_offset", 0.0);
-    p.output_scale = fields.number_or("output_scale", 1.0);
-    return p;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("input_lags", &P::input_lags, "",
+                 "n_u: past inputs v[k-1..k-n_u] (v[k] always used)")
+            .add("output_lags", &P::output_lags, "", "n_y: past outputs y[k-1..k-n_y]")
+            .add("play_thresholds", &P::play_thresholds, "input units", "r_i > 0, increasing")
+            .add("hidden_sizes", &P::hidden_sizes, "", "one or two tanh hidden layers")
+            .add("weights", &P::weights, "",
+                 "per hidden layer W (row-major) then b; output weights, constant, linear weights")
+            .add("input_offset", &P::input_offset, "input units", "normalisation v_off",
+                 Presence::optional)
+            .add("input_scale", &P::input_scale, "input units", "normalisation v_scale > 0",
+                 Presence::optional)
+            .add("output_offset", &P::output_offset, "output units", "normalisation y_off",
+                 Presence::optional)
+            .add("output_scale", &P::output_scale, "output units", "normalisation y_scale > 0",
+                 Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"past_inputs", state.past_inputs},
@@ -105,23 +87,29 @@ struct NarxCodec {
 
 using NarxAdapter = ModelAdapter<NarxCodec>;
 
+const FieldTable<NarxFitOptions>& narx_fit_option_table() {
+  using O = NarxFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("input_lags", &O::input_lags, "", "n_u")
+          .add("output_lags", &O::output_lags, "", "n_y")
+          .add("plays", &O::plays, "", "plays when thresholds are not given")
+          .add("play_thresholds", &O::play_thresholds, "input units",
+               "fixed play thresholds (default: spread over half the input range)")
+          .add("hidden_sizes", &O::hidden_sizes, "", "hidden layer sizes")
+          .add("seed", &O::seed, "", "seed of the initial weights")
+          .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations")
+          .add("simulation_iterations", &O::simulation_iterations, "",
+               "LM iterations on the free-run error after the one-step fit")
+          .add("patience", &O::patience, "", "early stopping: iterations without improvement")
+          .add("early_stopping_fraction", &O::early_stopping_fraction, "",
+               "end of the fit part monitored in free run")
+          .add("regularization", &O::regularization, "", "ridge weight on the network weights");
+  return table;
+}
+
 NarxFitOptions narx_fit_options(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  NarxFitOptions options;
-  options.input_lags = fields.count_or("input_lags", options.input_lags);
-  options.output_lags = fields.count_or("output_lags", options.output_lags);
-  options.plays = fields.count_or("plays", options.plays);
-  if (fields.has("play_thresholds")) options.play_thresholds = fields.numbers("play_thresholds");
-  if (fields.has("hidden_sizes")) options.hidden_sizes = sizes(fields, "hidden_sizes");
-  options.seed = fields.count_or("seed", options.seed);
-  options.max_iterations = fields.count_or("max_iterations", options.max_iterations);
-  options.simulation_iterations =
-      fields.count_or("simulation_iterations", options.simulation_iterations);
-  options.patience = fields.count_or("patience", options.patience);
-  options.early_stopping_fraction =
-      fields.number_or("early_stopping_fraction", options.early_stopping_fraction);
-  options.regularization = fields.number_or("regularization", options.regularization);
-  fields.finish();
+  auto options = narx_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   return options;
 }
@@ -140,32 +128,8 @@ ModelEntry narx_entry() {
   entry.name = std::string(NarxCodec::name);
   entry.description =
       "NARX: tanh network on past inputs, past outputs and play operators (black box); LM fit";
-  entry.parameters = {
-      {"input_lags", "whole number", "", "n_u: past inputs v[k-1..k-n_u] (v[k] always used)"},
-      {"output_lags", "whole number", "", "n_y: past outputs y[k-1..k-n_y]"},
-      {"play_thresholds", "array of numbers", "input units", "r_i > 0, increasing"},
-      {"hidden_sizes", "array of whole numbers", "", "one or two tanh hidden layers"},
-      {"weights", "array of numbers", "",
-       "per hidden layer W (row-major) then b; output weights, constant, linear weights"},
-      {"input_offset", "number", "input units", "normalisation v_off (default 0)"},
-      {"input_scale", "number", "input units", "normalisation v_scale > 0 (default 1)"},
-      {"output_offset", "number", "output units", "normalisation y_off (default 0)"},
-      {"output_scale", "number", "output units", "normalisation y_scale > 0 (default 1)"},
-  };
-  entry.fit_options = {
-      {"input_lags", "whole number", "", "n_u (2)"},
-      {"output_lags", "whole number", "", "n_y (2)"},
-      {"plays", "whole number", "", "plays when thresholds are not given (4)"},
-      {"play_thresholds", "array of numbers", "input units", "fixed play thresholds"},
-      {"hidden_sizes", "array of whole numbers", "", "hidden layer sizes ([8])"},
-      {"seed", "whole number", "", "seed of the initial weights (1)"},
-      {"max_iterations", "whole number", "", "Levenberg-Marquardt iterations (100)"},
-      {"simulation_iterations", "whole number", "",
-       "LM iterations on the free-run error after the one-step fit (100)"},
-      {"patience", "whole number", "", "early stopping: iterations without improvement (15)"},
-      {"early_stopping_fraction", "number", "", "end of the fit part monitored in free run (0.2)"},
-      {"regularization", "number", "", "ridge weight on the network weights (1e-6)"},
-  };
+  entry.parameters = NarxCodec::parameter_table().schema();
+  entry.fit_options = narx_fit_option_table().schema();
   entry.create = &create_from_json<NarxCodec>;
   entry.fit = &fit_narx_request;
   // 1 past input, 1 past output, 1 play, 2 neurons: 4 regressors, 2*4+2 + 2+1 + 4 = 17 weights.

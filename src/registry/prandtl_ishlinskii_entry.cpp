@@ -39,17 +39,17 @@ struct PrandtlIshlinskiiCodec {
   using Model = PrandtlIshlinskii;
   static constexpr std::string_view name = "pi";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    return {{"thresholds", model.params().thresholds},
-            {"weights", model.params().weights},
-            {"offset", model.params().offset}};
-  }
-  static Model::Params params_from_json(JsonFields& fields) {
-    Model::Params params;
-    params.thresholds = fields.numbers("thresholds");
-    params.weights = fields.numbers("weights");
-    params.offset = fields.number_or("offset", 0.0);
-    return params;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("thresholds", &P::thresholds, "input units",
+                 "play half-widths r_j: 0 = r_0 < r_1 < ... (r_0 = 0 is the linear term)")
+            .add("weights", &P::weights, "output / input units",
+                 "p_j, one per threshold; invertible iff p_0 > 0 and all partial sums > 0")
+            .add("offset", &P::offset, "output units", "y_off added to the output",
+                 Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return play_state_to_json(state);
@@ -82,17 +82,22 @@ struct PrandtlIshlinskiiCodec {
 
 using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
 
+const FieldTable<PiFitOptions>& prandtl_ishlinskii_fit_option_table() {
+  using O = PiFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+          .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+          .add("fit_offset", &O::fit_offset, "", "fit the output offset")
+          .add("min_linear_weight", &O::min_linear_weight, "",
+               "lower bound of p_0, keeps the model invertible")
+          .add("initial_state", &O::initial_state, pi_initial_state_from_string,
+               "virgin (plays at 0) or periodic (one period run first)");
+  return table;
+}
+
 PiFitOptions prandtl_ishlinskii_fit_options(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  PiFitOptions options;
-  options.operators = fields.count_or("operators", options.operators);
-  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
-  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
-  options.min_linear_weight = fields.number_or("min_linear_weight", options.min_linear_weight);
-  if (fields.has("initial_state")) {
-    options.initial_state = fields.parsed("initial_state", pi_initial_state_from_string);
-  }
-  fields.finish();
+  auto options = prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   return options;
 }
@@ -111,20 +116,8 @@ ModelEntry prandtl_ishlinskii_entry() {
   entry.name = std::string(PrandtlIshlinskiiCodec::name);
   entry.description =
       "Prandtl-Ishlinskii: weighted sum of play operators; analytic inverse; weights by NNLS";
-  entry.parameters = {
-      {"thresholds", "array of numbers", "input units",
-       "play half-widths r_j: 0 = r_0 < r_1 < ... (r_0 = 0 is the linear term)"},
-      {"weights", "array of numbers", "output / input units",
-       "p_j, one per threshold; invertible iff p_0 > 0 and all partial sums > 0"},
-      {"offset", "number", "output units", "y_off added to the output (default 0)"},
-  };
-  entry.fit_options = {
-      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
-      {"thresholds", "array of numbers", "input units", "fixed thresholds (default: uniform)"},
-      {"fit_offset", "boolean", "", "fit the output offset (true)"},
-      {"min_linear_weight", "number", "", "lower bound of p_0, keeps the model invertible"},
-      {"initial_state", "string", "", "virgin (plays at 0) or periodic (one period run first)"},
-  };
+  entry.parameters = PrandtlIshlinskiiCodec::parameter_table().schema();
+  entry.fit_options = prandtl_ishlinskii_fit_option_table().schema();
   entry.create = &create_from_json<PrandtlIshlinskiiCodec>;
   entry.fit = &fit_prandtl_ishlinskii_request;
   entry.example_params = {

@@ -18,38 +18,25 @@
 namespace hyst::detail {
 namespace {
 
-Preisach::Params preisach_params_from_json(const nlohmann::json& params_json,
-                                           const std::string& path) {
-  JsonFields fields(params_json, path);
-  Preisach::Params params;
-  params.everett.levels = fields.count("levels");
-  params.everett.lower = fields.number("lower");
-  params.everett.upper = fields.number("upper");
-  params.everett.weights = fields.numbers("weights");
-  if (fields.has("layout")) {
-    params.everett.layout = fields.parsed("layout", preisach_grid_layout_from_string);
-  }
-  params.offset = fields.number_or("offset", 0.0);
-  if (fields.has("initial_state")) {
-    params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
-  }
-  fields.finish();
-  return params;
-}
-
 struct PreisachCodec {
   using Model = Preisach;
   static constexpr std::string_view name = "preisach";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"levels", p.everett.levels},
-            {"lower", p.everett.lower},
-            {"upper", p.everett.upper},
-            {"weights", p.everett.weights},
-            {"layout", std::string(to_string(p.everett.layout))},
-            {"offset", p.offset},
-            {"initial_state", std::string(to_string(p.initial_state))}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using E = RelayGridEverett::Params;
+    static const auto everett =
+        FieldTable<E>()
+            .add("levels", &E::levels, "", "N threshold levels: N(N+1)/2 relays alpha >= beta")
+            .add("lower", &E::lower, "input units",
+                 "lower end of the input range (negative saturation)")
+            .add("upper", &E::upper, "input units",
+                 "upper end of the input range (positive saturation)")
+            .add("weights", &E::weights, "output units",
+                 "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j")
+            .add("layout", &E::layout, preisach_grid_layout_from_string,
+                 "cell_centred or endpoints", Presence::optional);
+    static const auto table = preisach_parameter_table<Model::Params>(everett);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
     return preisach_state_to_json(state);
@@ -83,27 +70,23 @@ struct PreisachCodec {
 
 using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
-std::unique_ptr<DynamicModel> create_preisach(const nlohmann::json& params_json,
-                                              const nlohmann::json* state_json) {
-  return make_dynamic_model<PreisachCodec>(preisach_params_from_json(params_json, "params"),
-                                           state_json);
+const FieldTable<PreisachWeightFitOptions>& preisach_fit_option_table() {
+  using O = PreisachWeightFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("levels", &O::levels, "", "N threshold levels")
+          .add("lower", &O::lower, "input units", "grid range (default: the data's)")
+          .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+          .add("layout", &O::layout, preisach_grid_layout_from_string, "cell_centred or endpoints")
+          .add("initial_state", &O::initial_state, preisach_initial_state_from_string,
+               "state the record starts from")
+          .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring relay weights")
+          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
+  return table;
 }
 
 FitOutcome fit_preisach_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  PreisachWeightFitOptions options;
-  options.levels = fields.count_or("levels", options.levels);
-  if (fields.has("lower")) options.lower = fields.number("lower");
-  if (fields.has("upper")) options.upper = fields.number("upper");
-  if (fields.has("layout")) {
-    options.layout = fields.parsed("layout", preisach_grid_layout_from_string);
-  }
-  if (fields.has("initial_state")) {
-    options.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
-  }
-  options.smoothness = fields.number_or("smoothness", options.smoothness);
-  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
-  fields.finish();
+  auto options = preisach_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
 
   auto result = fit_preisach_weights(request.input, request.output, options);
@@ -120,27 +103,9 @@ ModelEntry preisach_entry() {
   entry.description =
       "Preisach: weighted relays on a triangular grid, fast Everett form (cost independent of "
       "the grid); numerical inverse; weights by NNLS";
-  entry.parameters = {
-      {"levels", "whole number", "", "N threshold levels: N(N+1)/2 relays alpha >= beta"},
-      {"lower", "number", "input units", "lower end of the input range (negative saturation)"},
-      {"upper", "number", "input units", "upper end of the input range (positive saturation)"},
-      {"weights", "array of numbers", "output units",
-       "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j"},
-      {"layout", "string", "", "cell_centred (default) or endpoints"},
-      {"offset", "number", "output units", "y_off (default 0)"},
-      {"initial_state", "string", "",
-       "negative_saturation (default), positive_saturation or demagnetised"},
-  };
-  entry.fit_options = {
-      {"levels", "whole number", "", "N threshold levels (21)"},
-      {"lower", "number", "input units", "grid range (default: the data's)"},
-      {"upper", "number", "input units", "grid range (default: the data's)"},
-      {"layout", "string", "", "cell_centred or endpoints"},
-      {"initial_state", "string", "", "state the record starts from (negative_saturation)"},
-      {"smoothness", "number", "", "Tikhonov weight on neighbouring relay weights (0)"},
-      {"fit_offset", "boolean", "", "fit the output offset (true)"},
-  };
-  entry.create = &create_preisach;
+  entry.parameters = PreisachCodec::parameter_table().schema();
+  entry.fit_options = preisach_fit_option_table().schema();
+  entry.create = &create_from_json<PreisachCodec>;
   entry.fit = &fit_preisach_request;
   // The unweighted 231-relay model of the seed paper (mu = 1 for every relay).
   entry.example_params = {{"levels", 21},

@@ -1,7 +1,8 @@
 #pragma once
-// The model-file form of a Preisach state, shared by every Preisach entry (relay grid, tabulated
-// Everett function): the saturation the history starts from, the stored extrema, and the last
-// input (null when no input was applied since saturation; JSON has no infinity).
+// The model-file form of a Preisach model, shared by every Preisach entry (relay grid, tabulated
+// Everett function): its parameters (the Everett function's fields, offset, initial state) and
+// its state: the saturation the history starts from, the stored extrema, and the last input (null
+// when no input was applied since saturation; JSON has no infinity).
 
 #include <cmath>
 #include <limits>
@@ -11,10 +12,20 @@
 #include <nlohmann/json.hpp>
 
 #include "../detail/json_fields.hpp"
+#include "field_table.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/models/preisach.hpp"
 
 namespace hyst::detail {
+
+template <class Params, class EverettParams>
+FieldTable<Params> preisach_parameter_table(const FieldTable<EverettParams>& everett) {
+  return FieldTable<Params>()
+      .add_all(&Params::everett, everett)
+      .add("offset", &Params::offset, "output units", "y_off", Presence::optional)
+      .add("initial_state", &Params::initial_state, preisach_initial_state_from_string,
+           "negative_saturation, positive_saturation or demagnetised", Presence::optional);
+}
 
 inline nlohmann::json preisach_state_to_json(const PreisachState& state) {
   const auto memory = state.memory();

@@ -15,11 +15,19 @@ struct RateDependentPiCodec {
   using Model = RateDependentPrandtlIshlinskii;
   static constexpr std::string_view name = "rate_dependent_pi";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"thresholds", p.thresholds},   {"weights", p.weights},
-            {"rate_gain", p.rate_gain},     {"sample_time", p.sample_time},
-            {"rate_filter", p.rate_filter}, {"offset", p.offset}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    static const auto table =
+        FieldTable<P>()
+            .add("thresholds", &P::thresholds, "input units",
+                 "nominal (zero-rate) half-widths 0 = r_0 < r_1 < ...")
+            .add("weights", &P::weights, "output / input units", "p_j, one per threshold")
+            .add("rate_gain", &P::rate_gain, "s", "beta >= 0: threshold increase per unit |dv/dt|")
+            .add("sample_time", &P::sample_time, "s", "Ts > 0 of the input samples")
+            .add("rate_filter", &P::rate_filter, "s", "time constant >= 0 of the rate low-pass",
+                 Presence::optional)
+            .add("offset", &P::offset, "output units", "y_off", Presence::optional);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"play", state.play}, {"input", state.input}, {"rate", state.rate}};
@@ -49,31 +57,24 @@ struct RateDependentPiCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_rate_dependent_prandtl_ishlinskii(
-    const nlohmann::json& params_json, const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  RateDependentPrandtlIshlinskii::Params params;
-  params.thresholds = fields.numbers("thresholds");
-  params.weights = fields.numbers("weights");
-  params.rate_gain = fields.number("rate_gain");
-  params.sample_time = fields.number("sample_time");
-  params.rate_filter = fields.number_or("rate_filter", 0.0);
-  params.offset = fields.number_or("offset", 0.0);
-  fields.finish();
-  return make_dynamic_model<RateDependentPiCodec>(std::move(params), state_json);
+const FieldTable<RateDependentPiFitOptions>& rate_dependent_prandtl_ishlinskii_fit_option_table() {
+  using O = RateDependentPiFitOptions;
+  static const auto table =
+      FieldTable<O>(Presence::optional)
+          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+          .add("thresholds", &O::thresholds, "input units",
+               "fixed nominal thresholds (default: uniform)")
+          .add("rate_gain", &O::rate_gain, "s", "fixed beta >= 0 (0: the classical PI)")
+          .add("sample_time", &O::sample_time, "s", "Ts of the record")
+          .add("rate_filter", &O::rate_filter, "s", "rate low-pass time constant")
+          .add("fit_offset", &O::fit_offset, "", "fit the output offset")
+          .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
+  return table;
 }
 
 FitOutcome fit_rate_dependent_prandtl_ishlinskii_request(const FitRequest& request) {
-  JsonFields fields(request.options, "fit options");
-  RateDependentPiFitOptions options;
-  options.operators = fields.count_or("operators", options.operators);
-  if (fields.has("thresholds")) options.thresholds = fields.numbers("thresholds");
-  options.rate_gain = fields.number_or("rate_gain", options.rate_gain);
-  options.sample_time = fields.number_or("sample_time", options.sample_time);
-  options.rate_filter = fields.number_or("rate_filter", options.rate_filter);
-  options.fit_offset = fields.boolean_or("fit_offset", options.fit_offset);
-  options.min_linear_weight = fields.number_or("min_linear_weight", options.min_linear_weight);
-  fields.finish();
+  auto options =
+      rate_dependent_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
   auto result = fit_rate_dependent_prandtl_ishlinskii(request.input, request.output, options);
   auto initial = result.model.initial_state();
@@ -90,25 +91,9 @@ ModelEntry rate_dependent_prandtl_ishlinskii_entry() {
   entry.description =
       "rate-dependent PI: play thresholds r_j + beta |dv/dt|, loops widen with frequency; "
       "weights by NNLS for a fixed beta";
-  entry.parameters = {
-      {"thresholds", "array of numbers", "input units",
-       "nominal (zero-rate) half-widths 0 = r_0 < r_1 < ..."},
-      {"weights", "array of numbers", "output / input units", "p_j, one per threshold"},
-      {"rate_gain", "number", "s", "beta >= 0: threshold increase per unit |dv/dt|"},
-      {"sample_time", "number", "s", "Ts > 0 of the input samples"},
-      {"rate_filter", "number", "s", "time constant >= 0 of the rate low-pass (default 0)"},
-      {"offset", "number", "output units", "y_off (default 0)"},
-  };
-  entry.fit_options = {
-      {"operators", "whole number", "", "number of plays when thresholds are not given (10)"},
-      {"thresholds", "array of numbers", "input units", "fixed nominal thresholds (uniform)"},
-      {"rate_gain", "number", "s", "fixed beta >= 0 (0: the classical PI)"},
-      {"sample_time", "number", "s", "Ts of the record (1)"},
-      {"rate_filter", "number", "s", "rate low-pass time constant (0)"},
-      {"fit_offset", "boolean", "", "fit the output offset (true)"},
-      {"min_linear_weight", "number", "", "lower bound of p_0, keeps p_0 > 0"},
-  };
-  entry.create = &create_rate_dependent_prandtl_ishlinskii;
+  entry.parameters = RateDependentPiCodec::parameter_table().schema();
+  entry.fit_options = rate_dependent_prandtl_ishlinskii_fit_option_table().schema();
+  entry.create = &create_from_json<RateDependentPiCodec>;
   entry.fit = &fit_rate_dependent_prandtl_ishlinskii_request;
   entry.example_params = {{"thresholds", {0.0, 0.2, 0.4, 0.6}},
                           {"weights", {1.0, 0.6, 0.4, 0.2}},

@@ -18,30 +18,22 @@
 namespace hyst::detail {
 namespace {
 
-TabulatedPreisach::Params tabulated_params_from_json(const nlohmann::json& params_json,
-                                                     const std::string& path) {
-  JsonFields fields(params_json, path);
-  TabulatedPreisach::Params params;
-  params.everett.levels = fields.numbers("levels");
-  params.everett.values = fields.numbers("values");
-  params.offset = fields.number_or("offset", 0.0);
-  if (fields.has("initial_state")) {
-    params.initial_state = fields.parsed("initial_state", preisach_initial_state_from_string);
-  }
-  fields.finish();
-  return params;
-}
-
 struct TabulatedPreisachCodec {
   using Model = TabulatedPreisach;
   static constexpr std::string_view name = "tabulated_preisach";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    return {{"levels", p.everett.levels},
-            {"values", p.everett.values},
-            {"offset", p.offset},
-            {"initial_state", std::string(to_string(p.initial_state))}};
+  static const FieldTable<Model::Params>& parameter_table() {
+    using E = TabulatedEverett::Params;
+    static const auto everett =
+        FieldTable<E>()
+            .add("levels", &E::levels, "input units",
+                 "x_0 < x_1 < ... < x_K (K >= 1): the table's levels; inputs outside act as "
+                 "saturation")
+            .add("values", &E::values, "output units",
+                 "E(x_a, x_c) for c < a, K(K+1)/2 values at index a(a-1)/2 + c; every cell weight "
+                 "E[i+1,j] - E[i,j] - E[i+1,j+1] + E[i,j+1] >= 0");
+    static const auto table = preisach_parameter_table<Model::Params>(everett);
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
     return preisach_state_to_json(state);
@@ -74,12 +66,6 @@ struct TabulatedPreisachCodec {
   }
 };
 
-std::unique_ptr<DynamicModel> create_tabulated_preisach(const nlohmann::json& params_json,
-                                                        const nlohmann::json* state_json) {
-  return make_dynamic_model<TabulatedPreisachCodec>(
-      tabulated_params_from_json(params_json, "params"), state_json);
-}
-
 }  // namespace
 
 std::unique_ptr<DynamicModel> tabulated_preisach_model(TabulatedPreisach model) {
@@ -93,17 +79,8 @@ ModelEntry tabulated_preisach_entry() {
   entry.description =
       "Preisach with a tabulated Everett function (bilinear between levels): the model "
       "identified from FORCs by 'hyst fit preisach --forc FILE'; numerical inverse";
-  entry.parameters = {
-      {"levels", "array of numbers", "input units",
-       "x_0 < x_1 < ... < x_K (K >= 1): the table's levels; inputs outside act as saturation"},
-      {"values", "array of numbers", "output units",
-       "E(x_a, x_c) for c < a, K(K+1)/2 values at index a(a-1)/2 + c; every cell weight "
-       "E[i+1,j] - E[i,j] - E[i+1,j+1] + E[i,j+1] >= 0"},
-      {"offset", "number", "output units", "y_off (default 0)"},
-      {"initial_state", "string", "",
-       "negative_saturation (default), positive_saturation or demagnetised"},
-  };
-  entry.create = &create_tabulated_preisach;
+  entry.parameters = TabulatedPreisachCodec::parameter_table().schema();
+  entry.create = &create_from_json<TabulatedPreisachCodec>;
   // Four uniform cells over [-1, 1], each cell weight 0.1: E(x_a, x_c) = 0.1 (a-c)(a-c+1)/2,
   // total weight 1 (the output spans [-1, 1]).
   std::vector<double> values;

@@ -211,12 +211,14 @@ case_models() {
   expect_stdout '"name": "pi"' '"can_fit": true' '"can_invert": true'
   expect_ok "$HYST" models pi
   expect_stdout "thresholds" "weights" "offset" "fit options" "operators" "example model file:"
+  # Defaults come from the options struct through its field table.
+  expect_stdout "number of plays when thresholds are not given (default 10)"
   # The example is a ready-to-use model file.
   sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >example.json
   expect_ok "$HYST" info example.json
   expect_stdout "model:      pi" "inverse:    yes"
   expect_ok "$HYST" models pi --json
-  expect_stdout '"parameters"' '"fit_options"' '"example"' '"version": 1'
+  expect_stdout '"parameters"' '"fit_options"' '"example"' '"version": 1' '"default": "10"'
   expect_error 1 "unknown model 'nosuch'" "known: pi" -- "$HYST" models nosuch
 }
 

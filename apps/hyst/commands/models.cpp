@@ -31,8 +31,10 @@ bool example_has_inverse(const ModelEntry& entry) {
 nlohmann::json schema_json(const std::vector<ParameterInfo>& parameters) {
   auto list = nlohmann::json::array();
   for (const auto& p : parameters) {
-    list.push_back(
-        {{"name", p.name}, {"type", p.type}, {"unit", p.unit}, {"description", p.description}});
+    nlohmann::json field = {
+        {"name", p.name}, {"type", p.type}, {"unit", p.unit}, {"description", p.description}};
+    if (!p.default_value.empty()) field["default"] = p.default_value;
+    list.push_back(std::move(field));
   }
   return list;
 }
@@ -55,8 +57,9 @@ void print_schema_table(const std::vector<ParameterInfo>& parameters) {
   for (const auto& p : parameters)
     width = std::max(width, p.name.size());
   for (const auto& p : parameters) {
-    fmt::print("  {:<{}}  {}{}: {}\n", p.name, width, p.type,
-               p.unit.empty() ? "" : fmt::format(" [{}]", p.unit), p.description);
+    fmt::print("  {:<{}}  {}{}: {}{}\n", p.name, width, p.type,
+               p.unit.empty() ? "" : fmt::format(" [{}]", p.unit), p.description,
+               p.default_value.empty() ? "" : fmt::format(" (default {})", p.default_value));
   }
 }
 

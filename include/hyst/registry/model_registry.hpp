@@ -33,6 +33,9 @@ struct ParameterInfo {
   std::string type;         //!< "number", "array of numbers", ...
   std::string unit;         //!< e.g. "input units"
   std::string description;  //!< meaning and admissible range
+  //! The value taken when the field is left out; empty when it must be given or when the
+  //! description says what leaving it out means.
+  std::string default_value;
 };
 
 //! What a fitter is given: one input/output record, how to validate, and model-specific options
