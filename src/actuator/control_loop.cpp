@@ -5,32 +5,32 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
+namespace {
+
+constexpr detail::EnumNames<ControlStrategy, 4> kControlStrategyNames{{
+    {ControlStrategy::open_loop, "open_loop"},
+    {ControlStrategy::feedforward, "feedforward"},
+    {ControlStrategy::pid, "pid"},
+    {ControlStrategy::pid_feedforward, "pid_feedforward"},
+}};
+
+}  // namespace
 
 std::string_view to_string(ControlStrategy strategy) {
-  switch (strategy) {
-    case ControlStrategy::open_loop:
-      return "open_loop";
-    case ControlStrategy::feedforward:
-      return "feedforward";
-    case ControlStrategy::pid:
-      return "pid";
-    case ControlStrategy::pid_feedforward:
-      break;
-  }
-  return "pid_feedforward";
+  return detail::name_of(strategy, kControlStrategyNames);
 }
 
+// Accepts the short spelling "pid+ff" too, which the message does not list; the message lists the
+// names with commas only ("known: a, b, c"), as it always has.
 ControlStrategy control_strategy_from_string(std::string_view text) {
   if (text == "pid+ff") return ControlStrategy::pid_feedforward;
-  for (auto strategy : kControlStrategies) {
-    if (text == to_string(strategy)) return strategy;
-  }
-  throw Error(fmt::format("unknown control strategy '{}' (known: open_loop, feedforward, pid, "
-                          "pid_feedforward)",
-                          text),
+  if (const auto strategy = detail::find_named(text, kControlStrategyNames)) return *strategy;
+  throw Error(fmt::format("unknown control strategy '{}' (known: {})", text,
+                          detail::names_list(kControlStrategyNames, ", ")),
               "strategy");
 }
 

@@ -4,10 +4,17 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst::control {
 namespace {
+
+constexpr hyst::detail::EnumNames<AntiWindup, 3> kAntiWindupNames{{
+    {AntiWindup::none, "none"},
+    {AntiWindup::clamping, "clamping"},
+    {AntiWindup::back_calculation, "back_calculation"},
+}};
 
 void require_gain(double value, const char* field) {
   if (!std::isfinite(value) || value < 0.0) {
@@ -18,24 +25,15 @@ void require_gain(double value, const char* field) {
 }  // namespace
 
 std::string_view to_string(AntiWindup mode) {
-  switch (mode) {
-    case AntiWindup::none:
-      return "none";
-    case AntiWindup::clamping:
-      return "clamping";
-    case AntiWindup::back_calculation:
-      break;
-  }
-  return "back_calculation";
+  return hyst::detail::name_of(mode, kAntiWindupNames);
 }
 
+// Its message lists the names with commas only ("known: a, b, c"), as it always has.
 AntiWindup anti_windup_from_string(std::string_view text) {
-  for (auto mode : {AntiWindup::none, AntiWindup::clamping, AntiWindup::back_calculation}) {
-    if (text == to_string(mode)) return mode;
-  }
-  throw Error(
-      fmt::format("unknown anti-windup '{}' (known: none, clamping, back_calculation)", text),
-      "anti_windup");
+  if (const auto mode = hyst::detail::find_named(text, kAntiWindupNames)) return *mode;
+  throw Error(fmt::format("unknown anti-windup '{}' (known: {})", text,
+                          hyst::detail::names_list(kAntiWindupNames, ", ")),
+              "anti_windup");
 }
 
 Pid::Pid(const Params& params, double period) : params_(params), period_(period) {

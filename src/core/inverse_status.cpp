@@ -1,17 +1,20 @@
 #include "hyst/core/inverse_status.hpp"
 
+#include "detail/enum_names.hpp"
+
 namespace hyst {
+namespace {
+
+constexpr detail::EnumNames<InverseStatus, 3> kInverseStatusNames{{
+    {InverseStatus::ok, "ok"},
+    {InverseStatus::below_range, "below_range"},
+    {InverseStatus::above_range, "above_range"},
+}};
+
+}  // namespace
 
 std::string_view to_string(InverseStatus status) {
-  switch (status) {
-    case InverseStatus::ok:
-      return "ok";
-    case InverseStatus::below_range:
-      return "below_range";
-    case InverseStatus::above_range:
-      return "above_range";
-  }
-  return "unknown";
+  return detail::name_of(status, kInverseStatusNames);
 }
 
 }  // namespace hyst

@@ -1,13 +1,12 @@
 #include "hyst/data/corrections.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
-#include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/data/cycles.hpp"
 #include "record_checks.hpp"
@@ -15,7 +14,7 @@
 namespace hyst::data {
 namespace {
 
-constexpr std::array<std::pair<OffsetReference, std::string_view>, 3> kReferenceNames{{
+constexpr hyst::detail::EnumNames<OffsetReference, 3> kReferenceNames{{
     {OffsetReference::mean, "mean"},
     {OffsetReference::first, "first"},
     {OffsetReference::midrange, "midrange"},
@@ -24,18 +23,11 @@ constexpr std::array<std::pair<OffsetReference, std::string_view>, 3> kReference
 }  // namespace
 
 std::string_view to_string(OffsetReference reference) {
-  for (const auto& [value, name] : kReferenceNames) {
-    if (value == reference) return name;
-  }
-  return "unknown";
+  return hyst::detail::name_of(reference, kReferenceNames);
 }
 
 OffsetReference offset_reference_from_string(std::string_view text) {
-  for (const auto& [value, name] : kReferenceNames) {
-    if (name == text) return value;
-  }
-  throw Error(
-      fmt::format("unknown offset reference '{}' (expected mean, first or midrange)", text));
+  return hyst::detail::value_named(text, kReferenceNames, "offset reference");
 }
 
 OffsetRemoval remove_offset(std::span<const double> values, OffsetReference reference) {

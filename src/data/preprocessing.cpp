@@ -1,12 +1,12 @@
 #include "hyst/data/preprocessing.hpp"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/data/corrections.hpp"
 #include "hyst/data/cycles.hpp"
@@ -17,7 +17,7 @@
 namespace hyst::data {
 namespace {
 
-constexpr std::array<std::pair<ResampleMethod, std::string_view>, 3> kMethodNames{{
+constexpr hyst::detail::EnumNames<ResampleMethod, 3> kMethodNames{{
     {ResampleMethod::none, "none"},
     {ResampleMethod::input_grid, "input-grid"},
     {ResampleMethod::arc_length, "arc-length"},
@@ -77,18 +77,11 @@ std::string to_string(const CycleRange& range) {
 }
 
 std::string_view to_string(ResampleMethod method) {
-  for (const auto& [value, name] : kMethodNames) {
-    if (value == method) return name;
-  }
-  return "unknown";
+  return hyst::detail::name_of(method, kMethodNames);
 }
 
 ResampleMethod resample_method_from_string(std::string_view text) {
-  for (const auto& [value, name] : kMethodNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format(
-      "unknown resampling method '{}' (expected none, input-grid or arc-length)", text));
+  return hyst::detail::value_named(text, kMethodNames, "resampling method");
 }
 
 PreparedRecord preprocess(std::span<const double> input, std::span<const double> output,

@@ -10,6 +10,7 @@
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "detail/multistart_fit.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
@@ -25,6 +26,10 @@ using Kernel = GpiKernel<TanhEnvelope, T>;
 
 constexpr std::array<std::string_view, kGpiParameterCount> kParameterNames{
     "a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3", "rho", "tau", "alpha"};
+constexpr detail::EnumNames<GpiFitOptions::InitialState, 2> kGpiInitialStateNames{{
+    {GpiFitOptions::InitialState::rest, "rest"},
+    {GpiFitOptions::InitialState::periodic, "periodic"},
+}};
 constexpr std::size_t kRho = static_cast<std::size_t>(GpiParameter::rho);
 constexpr std::size_t kMaxM = 200;
 constexpr std::size_t kPenaltyGrid = 64;
@@ -471,20 +476,11 @@ GpiParameter gpi_parameter_from_string(std::string_view text) {
 }
 
 std::string_view to_string(GpiFitOptions::InitialState state) {
-  switch (state) {
-    case GpiFitOptions::InitialState::rest:
-      return "rest";
-    case GpiFitOptions::InitialState::periodic:
-      return "periodic";
-  }
-  return "unknown";
+  return detail::name_of(state, kGpiInitialStateNames);
 }
 
 GpiFitOptions::InitialState gpi_initial_state_from_string(std::string_view text) {
-  if (text == "rest") return GpiFitOptions::InitialState::rest;
-  if (text == "periodic") return GpiFitOptions::InitialState::periodic;
-  throw Error(fmt::format("unknown GPI initial state '{}' (expected rest or periodic)", text),
-              "initial_state");
+  return detail::value_named(text, kGpiInitialStateNames, "GPI initial state", "initial_state");
 }
 
 GpiParams gpi_params_from_vector(const GpiParameterVector& theta, std::size_t m, double input_min,

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <Eigen/Core>
 
+#include "../core/detail/enum_names.hpp"
 #include "detail/regressor_matrix.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
@@ -19,6 +20,11 @@
 
 namespace hyst {
 namespace {
+
+constexpr detail::EnumNames<PiFitOptions::InitialState, 2> kPiInitialStateNames{{
+    {PiFitOptions::InitialState::virgin, "virgin"},
+    {PiFitOptions::InitialState::periodic, "periodic"},
+}};
 
 struct Record {
   std::span<const double> input;
@@ -220,20 +226,11 @@ PiFit fit(const Record& record, const std::optional<Record>& held_out,
 }  // namespace
 
 std::string_view to_string(PiFitOptions::InitialState state) {
-  switch (state) {
-    case PiFitOptions::InitialState::virgin:
-      return "virgin";
-    case PiFitOptions::InitialState::periodic:
-      return "periodic";
-  }
-  return "unknown";
+  return detail::name_of(state, kPiInitialStateNames);
 }
 
 PiFitOptions::InitialState pi_initial_state_from_string(std::string_view text) {
-  if (text == "virgin") return PiFitOptions::InitialState::virgin;
-  if (text == "periodic") return PiFitOptions::InitialState::periodic;
-  throw Error(fmt::format("unknown PI initial state '{}' (expected virgin or periodic)", text),
-              "initial_state");
+  return detail::value_named(text, kPiInitialStateNames, "PI initial state", "initial_state");
 }
 
 std::vector<double> pi_default_thresholds(std::span<const double> input, std::size_t operators) {

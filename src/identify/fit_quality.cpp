@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
@@ -13,6 +14,13 @@ namespace {
 
 constexpr double kBandRanges = 10.0;       // width of the admissible band in measured ranges
 constexpr double kDegenerateRatio = 0.01;  // std(simulated) / std(measured) below: degenerate
+
+constexpr detail::EnumNames<FitQuality, 4> kFitQualityNames{{
+    {FitQuality::unchecked, "unchecked"},
+    {FitQuality::sound, "sound"},
+    {FitQuality::degenerate, "degenerate"},
+    {FitQuality::unstable, "unstable"},
+}};
 
 double standard_deviation(std::span<const double> values) {
   double mean = 0.0;
@@ -28,17 +36,7 @@ double standard_deviation(std::span<const double> values) {
 }  // namespace
 
 std::string_view to_string(FitQuality quality) {
-  switch (quality) {
-    case FitQuality::unchecked:
-      return "unchecked";
-    case FitQuality::sound:
-      return "sound";
-    case FitQuality::degenerate:
-      return "degenerate";
-    case FitQuality::unstable:
-      return "unstable";
-  }
-  return "unknown";
+  return detail::name_of(quality, kFitQualityNames);
 }
 
 QualityVerdict judge_simulation(std::span<const double> measured, std::span<const double> simulated,

@@ -1,20 +1,19 @@
 #include "hyst/identify/fit_report.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
-#include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
 
-constexpr std::array<std::pair<Termination, std::string_view>, 4> kTerminationNames{{
+constexpr detail::EnumNames<Termination, 4> kTerminationNames{{
     {Termination::converged, "converged"},
     {Termination::max_iterations, "max_iterations"},
     {Termination::no_progress, "no_progress"},
@@ -44,19 +43,11 @@ std::string metrics_row(std::string_view part, const ErrorMetrics& metrics) {
 }  // namespace
 
 std::string_view to_string(Termination termination) {
-  for (const auto& [value, name] : kTerminationNames) {
-    if (value == termination) return name;
-  }
-  return "unknown";
+  return detail::name_of(termination, kTerminationNames);
 }
 
 Termination termination_from_string(std::string_view text) {
-  for (const auto& [value, name] : kTerminationNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format(
-      "unknown termination '{}' (expected converged, max_iterations, no_progress or failed)",
-      text));
+  return detail::value_named(text, kTerminationNames, "termination");
 }
 
 std::string_view FitReport::status() const {

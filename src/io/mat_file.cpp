@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/limits.hpp"
@@ -30,6 +31,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::check_mat_sizes;
+
+constexpr hyst::detail::EnumNames<MatVersion, 2> kMatVersionNames{{
+    {MatVersion::v5, "v5"},
+    {MatVersion::v7_3, "v7.3"},
+}};
 
 struct MatCloser {
   void operator()(mat_t* mat) const { Mat_Close(mat); }
@@ -208,19 +214,11 @@ void validate_variables(const fs::path& path,
 }  // namespace
 
 std::string_view to_string(MatVersion version) {
-  switch (version) {
-    case MatVersion::v5:
-      return "v5";
-    case MatVersion::v7_3:
-      return "v7.3";
-  }
-  return "unknown";
+  return hyst::detail::name_of(version, kMatVersionNames);
 }
 
 MatVersion mat_version_from_string(std::string_view text) {
-  if (text == "v5") return MatVersion::v5;
-  if (text == "v7.3") return MatVersion::v7_3;
-  throw Error(fmt::format("unknown MAT file version '{}' (expected v5 or v7.3)", text));
+  return hyst::detail::value_named(text, kMatVersionNames, "MAT file version");
 }
 
 std::vector<std::string> list_mat_variables(const fs::path& path) {

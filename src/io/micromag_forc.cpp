@@ -1,12 +1,12 @@
 #include "hyst/io/micromag_forc.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/limits.hpp"
@@ -30,7 +30,7 @@ struct Block {
   std::size_t size() const { return lines.size(); }
 };
 
-constexpr std::array<std::pair<ForcDriftCorrection, std::string_view>, 3> kDriftNames{{
+constexpr hyst::detail::EnumNames<ForcDriftCorrection, 3> kDriftNames{{
     {ForcDriftCorrection::none, "none"},
     {ForcDriftCorrection::multiplicative, "multiplicative"},
     {ForcDriftCorrection::additive, "additive"},
@@ -312,18 +312,11 @@ MicromagForcFile read_micromag_forc(const std::filesystem::path& path) {
 }
 
 std::string_view to_string(ForcDriftCorrection correction) {
-  for (const auto& [value, name] : kDriftNames) {
-    if (value == correction) return name;
-  }
-  return "unknown";
+  return hyst::detail::name_of(correction, kDriftNames);
 }
 
 ForcDriftCorrection forc_drift_correction_from_string(std::string_view text) {
-  for (const auto& [value, name] : kDriftNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format(
-      "unknown FORC drift correction '{}' (expected none, multiplicative or additive)", text));
+  return hyst::detail::value_named(text, kDriftNames, "FORC drift correction");
 }
 
 MicromagForcFile correct_drift(MicromagForcFile file, ForcDriftCorrection correction) {

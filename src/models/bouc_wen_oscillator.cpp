@@ -1,8 +1,17 @@
 #include "hyst/models/bouc_wen_oscillator.hpp"
 
+#include "../core/detail/enum_names.hpp"
 #include "detail/parameter_rules.hpp"
 
 namespace hyst {
+namespace {
+
+constexpr detail::EnumNames<BoucWenOscillator::InputBetweenSamples, 2> kInputBetweenSamplesNames{{
+    {BoucWenOscillator::InputBetweenSamples::linear, "linear"},
+    {BoucWenOscillator::InputBetweenSamples::hold, "hold"},
+}};
+
+}  // namespace
 
 BoucWenOscillator::BoucWenOscillator(Params params) : params_(params) {
   const detail::ParameterRules rules{"Bouc-Wen oscillator"};
@@ -32,14 +41,12 @@ BoucWenOscillator::Params BoucWenOscillator::benchmark() {
 }
 
 std::string_view to_string(BoucWenOscillator::InputBetweenSamples mode) {
-  return mode == BoucWenOscillator::InputBetweenSamples::linear ? "linear" : "hold";
+  return detail::name_of(mode, kInputBetweenSamplesNames);
 }
 
 BoucWenOscillator::InputBetweenSamples input_between_samples_from_string(std::string_view text) {
-  if (text == "linear") return BoucWenOscillator::InputBetweenSamples::linear;
-  if (text == "hold") return BoucWenOscillator::InputBetweenSamples::hold;
-  throw Error(fmt::format("unknown input_between_samples '{}' (expected linear or hold)", text),
-              "input_between_samples");
+  return detail::value_named(text, kInputBetweenSamplesNames, "input_between_samples",
+                             "input_between_samples");
 }
 
 }  // namespace hyst

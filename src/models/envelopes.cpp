@@ -1,19 +1,18 @@
 #include "hyst/models/envelopes.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
-#include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
 
-constexpr std::array<std::pair<EnvelopeKind, std::string_view>, 3> kEnvelopeNames{{
+constexpr detail::EnumNames<EnvelopeKind, 3> kEnvelopeNames{{
     {EnvelopeKind::linear, "linear"},
     {EnvelopeKind::tanh, "tanh"},
     {EnvelopeKind::arctan, "arctan"},
@@ -62,18 +61,11 @@ void validate_slope(std::span<const double> c, EnvelopeKind kind, const Envelope
 }  // namespace
 
 std::string_view to_string(EnvelopeKind kind) {
-  for (const auto& [value, name] : kEnvelopeNames) {
-    if (value == kind) return name;
-  }
-  return "unknown";
+  return detail::name_of(kind, kEnvelopeNames);
 }
 
 EnvelopeKind envelope_kind_from_string(std::string_view text) {
-  for (const auto& [value, name] : kEnvelopeNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format("unknown envelope '{}' (expected linear, tanh or arctan)", text),
-              "envelope");
+  return detail::value_named(text, kEnvelopeNames, "envelope", "envelope");
 }
 
 void LinearEnvelope::validate(std::span<const double> c, const EnvelopeLabel& label) {

@@ -1,11 +1,11 @@
 #include "hyst/models/everett_relay_grid.hpp"
 
-#include <array>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::size_t kMaxLevels = 4096;
 
-constexpr std::array<std::pair<PreisachGridLayout, std::string_view>, 2> kLayoutNames{{
+constexpr detail::EnumNames<PreisachGridLayout, 2> kLayoutNames{{
     {PreisachGridLayout::cell_centred, "cell_centred"},
     {PreisachGridLayout::endpoints, "endpoints"},
 }};
@@ -42,19 +42,11 @@ void validate_range(std::size_t levels, double lower, double upper, PreisachGrid
 }  // namespace
 
 std::string_view to_string(PreisachGridLayout layout) {
-  for (const auto& [value, name] : kLayoutNames) {
-    if (value == layout) return name;
-  }
-  return "unknown";
+  return detail::name_of(layout, kLayoutNames);
 }
 
 PreisachGridLayout preisach_grid_layout_from_string(std::string_view text) {
-  for (const auto& [value, name] : kLayoutNames) {
-    if (name == text) return value;
-  }
-  throw Error(
-      fmt::format("unknown Preisach grid layout '{}' (expected cell_centred or endpoints)", text),
-      "layout");
+  return detail::value_named(text, kLayoutNames, "Preisach grid layout", "layout");
 }
 
 std::vector<double> preisach_thresholds(std::size_t levels, double lower, double upper,

@@ -1,19 +1,19 @@
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
 
-constexpr std::array<std::pair<GpiDensity, std::string_view>, 2> kDensityNames{{
+constexpr detail::EnumNames<GpiDensity, 2> kDensityNames{{
     {GpiDensity::exponential, "exponential"},
     {GpiDensity::free, "free"},
 }};
@@ -126,18 +126,11 @@ void validate(const GpiParams& params) {
 }  // namespace
 
 std::string_view to_string(GpiDensity density) {
-  for (const auto& [value, name] : kDensityNames) {
-    if (value == density) return name;
-  }
-  return "unknown";
+  return detail::name_of(density, kDensityNames);
 }
 
 GpiDensity gpi_density_from_string(std::string_view text) {
-  for (const auto& [value, name] : kDensityNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format("unknown GPI density '{}' (expected exponential or free)", text),
-              "density");
+  return detail::value_named(text, kDensityNames, "GPI density", "density");
 }
 
 template <Envelope E>

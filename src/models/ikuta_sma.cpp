@@ -2,11 +2,19 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
+
+// In the order of the parser's message, which lists the resting branch first.
+constexpr detail::EnumNames<IkutaSma::Branch, 3> kIkutaBranchNames{{
+    {IkutaSma::Branch::rest, "rest"},
+    {IkutaSma::Branch::heating, "heating"},
+    {IkutaSma::Branch::cooling, "cooling"},
+}};
 
 void require_finite_parameter(double value, std::string_view field, std::string_view symbol) {
   if (!std::isfinite(value)) {
@@ -81,23 +89,11 @@ IkutaSma::State IkutaSma::make_state(double fraction, double input, Branch branc
 }
 
 std::string_view to_string(IkutaSma::Branch branch) {
-  switch (branch) {
-    case IkutaSma::Branch::heating:
-      return "heating";
-    case IkutaSma::Branch::cooling:
-      return "cooling";
-    case IkutaSma::Branch::rest:
-      break;
-  }
-  return "rest";
+  return detail::name_of(branch, kIkutaBranchNames);
 }
 
 IkutaSma::Branch ikuta_branch_from_string(std::string_view text) {
-  if (text == "rest") return IkutaSma::Branch::rest;
-  if (text == "heating") return IkutaSma::Branch::heating;
-  if (text == "cooling") return IkutaSma::Branch::cooling;
-  throw Error(fmt::format("unknown Ikuta branch '{}' (expected rest, heating or cooling)", text),
-              "branch");
+  return detail::value_named(text, kIkutaBranchNames, "Ikuta branch", "branch");
 }
 
 }  // namespace hyst

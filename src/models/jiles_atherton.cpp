@@ -2,9 +2,18 @@
 
 #include <algorithm>
 
+#include "../core/detail/enum_names.hpp"
 #include "detail/parameter_rules.hpp"
 
 namespace hyst {
+namespace {
+
+constexpr detail::EnumNames<JilesAthertonVariant, 2> kJilesAthertonVariantNames{{
+    {JilesAthertonVariant::original, "original"},
+    {JilesAthertonVariant::venkataraman, "venkataraman"},
+}};
+
+}  // namespace
 
 JilesAtherton::JilesAtherton(Params params) : params_(params) {
   const detail::ParameterRules rules{"Jiles-Atherton"};
@@ -83,15 +92,11 @@ double JilesAtherton::susceptibility(const State& state, double direction) const
 }
 
 std::string_view to_string(JilesAthertonVariant variant) {
-  return variant == JilesAthertonVariant::original ? "original" : "venkataraman";
+  return detail::name_of(variant, kJilesAthertonVariantNames);
 }
 
 JilesAthertonVariant jiles_atherton_variant_from_string(std::string_view text) {
-  if (text == "original") return JilesAthertonVariant::original;
-  if (text == "venkataraman") return JilesAthertonVariant::venkataraman;
-  throw Error(
-      fmt::format("unknown Jiles-Atherton variant '{}' (expected original or venkataraman)", text),
-      "variant");
+  return detail::value_named(text, kJilesAthertonVariantNames, "Jiles-Atherton variant", "variant");
 }
 
 }  // namespace hyst

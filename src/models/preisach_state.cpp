@@ -1,17 +1,16 @@
 #include "hyst/models/preisach_state.hpp"
 
-#include <array>
 #include <cmath>
-#include <utility>
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
 
-constexpr std::array<std::pair<PreisachInitialState, std::string_view>, 3> kInitialStateNames{{
+constexpr detail::EnumNames<PreisachInitialState, 3> kInitialStateNames{{
     {PreisachInitialState::negative_saturation, "negative_saturation"},
     {PreisachInitialState::positive_saturation, "positive_saturation"},
     {PreisachInitialState::demagnetised, "demagnetised"},
@@ -20,20 +19,11 @@ constexpr std::array<std::pair<PreisachInitialState, std::string_view>, 3> kInit
 }  // namespace
 
 std::string_view to_string(PreisachInitialState state) {
-  for (const auto& [value, name] : kInitialStateNames) {
-    if (value == state) return name;
-  }
-  return "unknown";
+  return detail::name_of(state, kInitialStateNames);
 }
 
 PreisachInitialState preisach_initial_state_from_string(std::string_view text) {
-  for (const auto& [value, name] : kInitialStateNames) {
-    if (name == text) return value;
-  }
-  throw Error(fmt::format("unknown Preisach initial state '{}' (expected negative_saturation, "
-                          "positive_saturation or demagnetised)",
-                          text),
-              "initial_state");
+  return detail::value_named(text, kInitialStateNames, "Preisach initial state", "initial_state");
 }
 
 std::vector<double> preisach_midpoint_staircase(double lower, double upper, std::size_t pairs) {

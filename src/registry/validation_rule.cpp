@@ -6,41 +6,46 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
+namespace {
+
+constexpr detail::EnumNames<ValidationStart, 3> kValidationStartNames{{
+    {ValidationStart::rest, "rest"},
+    {ValidationStart::periodic, "periodic"},
+    {ValidationStart::continued, "continue"},
+}};
+
+constexpr detail::EnumNames<ValidationAlignment, 2> kValidationAlignmentNames{{
+    {ValidationAlignment::none, "none"},
+    {ValidationAlignment::first_sample, "first-sample"},
+}};
+
+}  // namespace
 
 std::string_view to_string(ValidationStart start) {
-  switch (start) {
-    case ValidationStart::rest:
-      return "rest";
-    case ValidationStart::periodic:
-      return "periodic";
-    case ValidationStart::continued:
-      return "continue";
-  }
-  return "rest";
+  return detail::name_of(start, kValidationStartNames);
 }
 
 std::string_view to_string(ValidationAlignment align) {
-  return align == ValidationAlignment::first_sample ? "first-sample" : "none";
+  return detail::name_of(align, kValidationAlignmentNames);
 }
 
+// These messages have their own form ("'x' is not known (a, b, c)"), which users match.
 ValidationStart validation_start_from_string(std::string_view text) {
-  for (const auto start :
-       {ValidationStart::rest, ValidationStart::periodic, ValidationStart::continued}) {
-    if (text == to_string(start)) return start;
-  }
-  throw Error(fmt::format("validation start '{}' is not known (rest, periodic, continue)", text),
+  if (const auto start = detail::find_named(text, kValidationStartNames)) return *start;
+  throw Error(fmt::format("validation start '{}' is not known ({})", text,
+                          detail::names_list(kValidationStartNames, ", ")),
               "validation_start");
 }
 
 ValidationAlignment validation_alignment_from_string(std::string_view text) {
-  for (const auto align : {ValidationAlignment::none, ValidationAlignment::first_sample}) {
-    if (text == to_string(align)) return align;
-  }
-  throw Error(fmt::format("validation align '{}' is not known (none, first-sample)", text),
+  if (const auto align = detail::find_named(text, kValidationAlignmentNames)) return *align;
+  throw Error(fmt::format("validation align '{}' is not known ({})", text,
+                          detail::names_list(kValidationAlignmentNames, ", ")),
               "validation_align");
 }
 

@@ -1,0 +1,61 @@
+// The name tables of enumerations (src/core/detail/enum_names.hpp): the spelling of a value, the
+// list of names in parser messages, and the parser's error with its field.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "detail/enum_names.hpp"
+
+namespace hyst {
+namespace {
+
+enum class Shade { light, medium, dark, unlisted };
+
+constexpr detail::EnumNames<Shade, 3> kShadeNames{{
+    {Shade::light, "light"},
+    {Shade::medium, "medium"},
+    {Shade::dark, "dark"},
+}};
+
+TEST(EnumNames, NameOfAValueAndOfOneNotInTheTable) {
+  EXPECT_EQ(detail::name_of(Shade::medium, kShadeNames), "medium");
+  EXPECT_EQ(detail::name_of(Shade::unlisted, kShadeNames), "unknown");
+}
+
+TEST(EnumNames, NamesListWithOneTwoAndThreeNames) {
+  constexpr detail::EnumNames<Shade, 1> one{{{Shade::light, "light"}}};
+  constexpr detail::EnumNames<Shade, 2> two{{{Shade::light, "light"}, {Shade::dark, "dark"}}};
+  EXPECT_EQ(detail::names_list(one), "light");
+  EXPECT_EQ(detail::names_list(two), "light or dark");
+  EXPECT_EQ(detail::names_list(kShadeNames), "light, medium or dark");
+  EXPECT_EQ(detail::names_list(kShadeNames, ", "), "light, medium, dark");
+}
+
+TEST(EnumNames, ValueNamedParsesEveryName) {
+  for (const auto& [value, name] : kShadeNames) {
+    EXPECT_EQ(detail::value_named(name, kShadeNames, "shade"), value);
+  }
+  EXPECT_EQ(detail::find_named("dark", kShadeNames), Shade::dark);
+  EXPECT_FALSE(detail::find_named("Dark", kShadeNames).has_value());
+}
+
+TEST(EnumNames, ValueNamedThrowsWithTheNamesAndTheField) {
+  try {
+    detail::value_named("pale", kShadeNames, "shade", "colour.shade");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "unknown shade 'pale' (expected light, medium or dark)");
+    EXPECT_EQ(error.field(), "colour.shade");
+  }
+  try {
+    detail::value_named("", kShadeNames, "shade");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "unknown shade '' (expected light, medium or dark)");
+    EXPECT_EQ(error.field(), "");
+  }
+}
+
+}  // namespace
+}  // namespace hyst
