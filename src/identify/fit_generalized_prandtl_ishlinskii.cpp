@@ -131,31 +131,6 @@ class CostFunctor {
   std::size_t samples_ = 0;
 };
 
-// One Levenberg-Marquardt run from theta (advanced in place).
-ceres::Solver::Summary solve(const CostFunctor& functor, GpiParameterVector& theta,
-                             const std::array<GpiParameterVector, 2>& bounds,
-                             std::size_t iterations, double function_tolerance) {
-  ceres::Problem problem;
-  auto* cost = new ceres::AutoDiffCostFunction<CostFunctor, ceres::DYNAMIC, kGpiParameterCount>(
-      new CostFunctor(functor), static_cast<int>(functor.residuals()));
-  problem.AddResidualBlock(cost, nullptr, theta.data());
-  for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
-    if (i == kRho) continue;
-    problem.SetParameterLowerBound(theta.data(), static_cast<int>(i), bounds[0][i]);
-    problem.SetParameterUpperBound(theta.data(), static_cast<int>(i), bounds[1][i]);
-  }
-  // rho is the scale gauge (an exact symmetry): held, never iterated.
-  problem.SetManifold(theta.data(),
-                      new ceres::SubsetManifold(kGpiParameterCount, {static_cast<int>(kRho)}));
-  auto options = detail::levenberg_marquardt_options(iterations, function_tolerance);
-  detail::StagnationStop stagnation;
-  options.callbacks.push_back(&stagnation);
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  if (stagnation.stopped()) summary.message = stagnation.message();
-  return summary;
-}
-
 // 0.5 sum (model - data)^2 over the data residuals only (no penalty).
 double data_cost(const CostFunctor& functor, const GpiParameterVector& theta) {
   std::vector<double> residuals(functor.residuals());
@@ -177,9 +152,7 @@ Model::State record_state(const Model& model, std::span<const double> input, boo
   return state;
 }
 
-GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_out,
-           const GpiFitOptions& options) {
-  const auto clock_start = std::chrono::steady_clock::now();
+void validate_gpi_options(const GpiFitOptions& options) {
   if (options.m < 1 || options.m > kMaxM) {
     throw Error(fmt::format("GPI fit m = {} must be in [1, {}]", options.m, kMaxM), "m");
   }
@@ -191,6 +164,26 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
                             options.function_tolerance),
                 "function_tolerance");
   }
+}
+
+// The records of a fit, checked: the fitted segments with their outputs joined, the ranges of the
+// fitted parts, and the operating range of every input the model will see.
+struct FitData {
+  DataSplit split;
+  bool periodic = false;
+  std::vector<Segment> segments;
+  std::vector<double> all_output;
+  std::size_t widest = 0;  // the record with the largest output range sets the starts
+  double fit_input_min = std::numeric_limits<double>::infinity();
+  double fit_input_max = -std::numeric_limits<double>::infinity();
+  double output_min = 0.0;
+  double output_max = 0.0;
+  double input_min = std::numeric_limits<double>::infinity();
+  double input_max = -std::numeric_limits<double>::infinity();
+};
+
+void check_gpi_records(std::span<const GpiRecord> records, std::span<const GpiRecord> held_out,
+                       const GpiFitOptions& options) {
   if (records.empty()) throw Error("GPI fit: no record to fit");
   for (std::size_t r = 0; r < records.size(); ++r)
     validate_record(records[r], record_name("", r, records.size()));
@@ -202,74 +195,76 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
                             options.validate_fraction),
                 "validate_fraction");
   }
-  DataSplit split;
+  for (std::size_t r = 0; r < held_out.size(); ++r) {
+    require_varying(held_out[r].output,
+                    fmt::format("validation output{}", record_suffix(r, held_out.size())),
+                    "its range normalises the validation NRMSE");
+  }
+}
+
+void widen_to(double& lowest, double& highest, std::span<const double> samples) {
+  const auto [lo, hi] = std::minmax_element(samples.begin(), samples.end());
+  lowest = std::min(lowest, *lo);
+  highest = std::max(highest, *hi);
+}
+
+FitData fit_data(std::span<const GpiRecord> records, std::span<const GpiRecord> held_out,
+                 const GpiFitOptions& options) {
+  check_gpi_records(records, held_out, options);
+  FitData data;
   try {
-    split = split_by_fraction(records.front().input.size(), options.validate_fraction);
+    data.split = split_by_fraction(records.front().input.size(), options.validate_fraction);
   } catch (const Error& error) {
     throw Error(fmt::format("GPI fit: {}", error.what()), "validate_fraction");
   }
-
-  // The fitted parts and the data ranges.
-  const bool periodic = options.initial_state == GpiFitOptions::InitialState::periodic;
-  std::vector<Segment> segments;
-  std::vector<double> all_output;  // concatenated fitted outputs, for the metrics
-  std::size_t widest = 0;          // the record with the largest output range sets the starts
+  data.periodic = options.initial_state == GpiFitOptions::InitialState::periodic;
   for (std::size_t r = 0; r < records.size(); ++r) {
     const auto& record = records[r];
-    const std::size_t size = r == 0 ? split.fit_size() : record.input.size();
-    Segment segment{periodic ? record.input : std::span<const double>{}, record.input.first(size),
-                    record.output.first(size), record.input.front()};
+    const std::size_t size = r == 0 ? data.split.fit_size() : record.input.size();
+    Segment segment{data.periodic ? record.input : std::span<const double>{},
+                    record.input.first(size), record.output.first(size), record.input.front()};
     const auto suffix = record_suffix(r, records.size());
     require_varying(segment.input, fmt::format("input of the fit part{}", suffix),
                     "the envelopes need a varying input");
     require_varying(segment.output, fmt::format("output of the fit part{}", suffix),
                     "there is no hysteresis to fit");
-    all_output.insert(all_output.end(), segment.output.begin(), segment.output.end());
+    data.all_output.insert(data.all_output.end(), segment.output.begin(), segment.output.end());
     if (range_of(segment.output) >
-        range_of(segments.empty() ? segment.output : segments[widest].output)) {
-      widest = r;
+        range_of(data.segments.empty() ? segment.output : data.segments[data.widest].output)) {
+      data.widest = r;
     }
-    segments.push_back(segment);
+    widen_to(data.fit_input_min, data.fit_input_max, segment.input);
+    data.segments.push_back(segment);
   }
-  if (all_output.size() < 2 * kGpiParameterCount) {
+  if (data.all_output.size() < 2 * kGpiParameterCount) {
     throw Error(fmt::format("GPI fit: the fit part has {} samples, fewer than 2 * 11 = 22",
-                            all_output.size()));
+                            data.all_output.size()));
   }
-  double fit_in_lo = std::numeric_limits<double>::infinity(), fit_in_hi = -fit_in_lo;
-  double out_lo = fit_in_lo, out_hi = fit_in_hi, input_min = fit_in_lo, input_max = fit_in_hi;
-  for (const auto& segment : segments) {
-    const auto [lo, hi] = std::minmax_element(segment.input.begin(), segment.input.end());
-    fit_in_lo = std::min(fit_in_lo, *lo);
-    fit_in_hi = std::max(fit_in_hi, *hi);
-  }
-  out_lo = *std::min_element(all_output.begin(), all_output.end());
-  out_hi = *std::max_element(all_output.begin(), all_output.end());
-  for (const auto& record : records) {
-    const auto [lo, hi] = std::minmax_element(record.input.begin(), record.input.end());
-    input_min = std::min(input_min, *lo);
-    input_max = std::max(input_max, *hi);
-  }
-  for (std::size_t r = 0; r < held_out.size(); ++r) {
-    require_varying(held_out[r].output,
-                    fmt::format("validation output{}", record_suffix(r, held_out.size())),
-                    "its range normalises the validation NRMSE");
-    const auto [lo, hi] = std::minmax_element(held_out[r].input.begin(), held_out[r].input.end());
-    input_min = std::min(input_min, *lo);
-    input_max = std::max(input_max, *hi);
-  }
+  const auto [y_lo, y_hi] = std::minmax_element(data.all_output.begin(), data.all_output.end());
+  data.output_min = *y_lo;
+  data.output_max = *y_hi;
+  for (const auto& record : records)
+    widen_to(data.input_min, data.input_max, record.input);
+  for (const auto& record : held_out)
+    widen_to(data.input_min, data.input_max, record.input);
   // Operating range: every input the model will see, widened by 1 % of the span.
-  const double margin = 0.01 * (input_max - input_min);
-  input_min = options.input_min.value_or(input_min - margin);
-  input_max = options.input_max.value_or(input_max + margin);
-  if (!(std::isfinite(input_min) && std::isfinite(input_max) && input_min < input_max)) {
+  const double margin = 0.01 * (data.input_max - data.input_min);
+  data.input_min = options.input_min.value_or(data.input_min - margin);
+  data.input_max = options.input_max.value_or(data.input_max + margin);
+  if (!(std::isfinite(data.input_min) && std::isfinite(data.input_max) &&
+        data.input_min < data.input_max)) {
     throw Error(fmt::format("GPI fit operating range [{}, {}] must be finite with input_min < "
                             "input_max",
-                            input_min, input_max),
+                            data.input_min, data.input_max),
                 "input_min");
   }
+  return data;
+}
 
-  // Bounds and starting points.
-  auto bounds = default_gpi_bounds(fit_in_lo, fit_in_hi, out_lo, out_hi, options.m);
+// The default bounds of the data with the user's overrides. rho's are set later (the gauge).
+std::array<GpiParameterVector, 2> fit_bounds(const FitData& data, const GpiFitOptions& options) {
+  auto bounds = default_gpi_bounds(data.fit_input_min, data.fit_input_max, data.output_min,
+                                   data.output_max, options.m);
   for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
     if (options.lower[i]) bounds[0][i] = *options.lower[i];
     if (options.upper[i]) bounds[1][i] = *options.upper[i];
@@ -281,10 +276,17 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
                   fmt::format("lower[{}]", kParameterNames[i]));
     }
   }
+  return bounds;
+}
+
+// The user's starts (each inside the bounds), or the data-derived ones moved into them.
+std::vector<GpiParameterVector> fit_starts(const FitData& data, const GpiFitOptions& options,
+                                           const std::array<GpiParameterVector, 2>& bounds) {
   std::vector<GpiParameterVector> starts = options.starts;
   const bool derived_starts = starts.empty();
   if (derived_starts) {
-    starts = gpi_starting_points(segments[widest].input, segments[widest].output, options.m);
+    const auto& widest = data.segments[data.widest];
+    starts = gpi_starting_points(widest.input, widest.output, options.m);
   }
   for (std::size_t s = 0; s < starts.size(); ++s) {
     for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
@@ -305,88 +307,75 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
       }
     }
   }
+  return starts;
+}
 
-  // The cost, with the ordering penalty on a grid of the operating range.
+// The cost, with the ordering penalty on a grid of the operating range.
+CostFunctor gpi_cost_functor(const FitData& data, std::size_t m) {
   std::vector<double> grid(kPenaltyGrid);
   for (std::size_t g = 0; g < kPenaltyGrid; ++g) {
-    grid[g] = input_min + (input_max - input_min) * static_cast<double>(g) /
-                              static_cast<double>(kPenaltyGrid - 1);
+    grid[g] = data.input_min + (data.input_max - data.input_min) * static_cast<double>(g) /
+                                   static_cast<double>(kPenaltyGrid - 1);
   }
-  const double penalty_weight = 10.0 * std::sqrt(static_cast<double>(all_output.size()));
-  const CostFunctor functor(segments, options.m, grid, penalty_weight);
+  const double penalty_weight = 10.0 * std::sqrt(static_cast<double>(data.all_output.size()));
+  return CostFunctor(data.segments, m, std::move(grid), penalty_weight);
+}
 
-  // Screening: every start a few iterations; the best one is refined.
-  std::size_t iterations = 0;
-  std::size_t best = 0;
-  double best_cost = std::numeric_limits<double>::infinity();
-  GpiParameterVector best_theta{};
-  ceres::Solver::Summary best_summary;
-  std::vector<double> start_costs(starts.size());
-  for (std::size_t s = 0; s < starts.size(); ++s) {
-    GpiParameterVector theta = starts[s];
-    start_costs[s] = data_cost(functor, theta);
-    const auto summary =
-        solve(functor, theta, bounds, options.screening_iterations, options.function_tolerance);
-    iterations +=
-        static_cast<std::size_t>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      best = s;
-      best_theta = theta;
-      best_summary = summary;
-    }
+// The engine's options: rho is the scale gauge (an exact symmetry), held at its start value, so
+// its bounds only have to contain every start.
+detail::MultistartOptions<kGpiParameterCount> engine_options(
+    const GpiFitOptions& options, const std::array<GpiParameterVector, 2>& bounds,
+    const std::vector<GpiParameterVector>& starts) {
+  detail::MultistartOptions<kGpiParameterCount> engine;
+  engine.lower = bounds[0];
+  engine.upper = bounds[1];
+  double rho_min = std::numeric_limits<double>::infinity(), rho_max = 0.0;
+  for (const auto& start : starts) {
+    rho_min = std::min(rho_min, start[kRho]);
+    rho_max = std::max(rho_max, start[kRho]);
   }
-  if (!std::isfinite(best_cost)) {
-    throw Error(fmt::format("GPI fit: Ceres found no usable solution from any of the {} starts",
-                            starts.size()));
-  }
-  std::size_t refining = 0;
-  if (options.max_iterations > 0 && best_summary.termination_type == ceres::NO_CONVERGENCE) {
-    best_summary =
-        solve(functor, best_theta, bounds, options.max_iterations, options.function_tolerance);
-    refining = static_cast<std::size_t>(best_summary.num_successful_steps +
-                                        best_summary.num_unsuccessful_steps);
-    iterations += refining;
-  }
+  engine.lower[kRho] = 0.5 * rho_min;
+  engine.upper[kRho] = 2.0 * rho_max;
+  engine.fixed = {static_cast<int>(kRho)};
+  engine.screening_iterations = options.screening_iterations;
+  engine.max_iterations = options.max_iterations;
+  engine.function_tolerance = options.function_tolerance;
+  return engine;
+}
 
-  // At-bound flags in the iteration gauge, then the gauge sum_j p_j = 1 (exact symmetry).
-  std::array<bool, kGpiParameterCount> at_bound{};
-  for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
-    if (i == kRho) continue;
-    const double width = bounds[1][i] - bounds[0][i];
-    at_bound[i] = best_theta[i] - bounds[0][i] <= 1e-6 * width ||
-                  bounds[1][i] - best_theta[i] <= 1e-6 * width;
-  }
-  GpiParams params = gpi_params_from_vector(best_theta, options.m, input_min, input_max,
-                                            records.front().input.front());
+// The fitted parameters in the gauge sum_j p_j = 1 (returned in `factor`: the rescaling), with a
+// violation of the ordering the penalty left (tiny; returned in `excess`) removed by raising
+// gamma_r.
+GpiParams fitted_params(const GpiParameterVector& theta, const FitData& data, std::size_t m,
+                        double initial_input, double& factor, double& excess) {
+  GpiParams params =
+      gpi_params_from_vector(theta, m, data.input_min, data.input_max, initial_input);
   double weight_sum = 0.0;
-  {
-    std::vector<double> r(options.m + 1), p(options.m + 1);
-    Kernel<double>::exponential_density(params.rho, params.tau, params.alpha, options.m, r.data(),
-                                        p.data());
-    for (double pj : p)
-      weight_sum += pj;
-  }
-  const double factor = 1.0 / weight_sum;
+  std::vector<double> r(m + 1), p(m + 1);
+  Kernel<double>::exponential_density(params.rho, params.tau, params.alpha, m, r.data(), p.data());
+  for (double pj : p)
+    weight_sum += pj;
+  factor = 1.0 / weight_sum;
   params = rescale_density(params, factor);
-  // A violation of the ordering the penalty left (tiny) is removed by raising gamma_r.
-  double excess = 0.0;
+  excess = 0.0;
   for (std::size_t k = 0; k < kEnvelopeOrderingGrid; ++k) {
-    const double v = input_min + (input_max - input_min) * static_cast<double>(k) /
-                                     static_cast<double>(kEnvelopeOrderingGrid - 1);
+    const double v = data.input_min + (data.input_max - data.input_min) * static_cast<double>(k) /
+                                          static_cast<double>(kEnvelopeOrderingGrid - 1);
     excess = std::max(excess, TanhEnvelope::value(params.ascending.data(), v) -
                                   TanhEnvelope::value(params.descending.data(), v));
   }
   if (excess > 0.0) {
     params.descending[3] += excess * (1 + 1e-9) + 1e-15 * std::abs(params.descending[3]);
   }
+  return params;
+}
 
-  GpiFit result{Model(params), {}, {}, {}, starts.size(), best};
-  const Model& model = result.model;
-  result.initial_state = record_state(model, records.front().input, periodic);
-
-  // The parameters with their bounds, in the reported gauge.
+// The parameters with their bounds, in the reported gauge (the iteration's scaled by `factor`).
+std::vector<GpiFitParameter> reported_parameters(
+    const GpiParams& params, const std::array<GpiParameterVector, 2>& bounds,
+    const std::array<bool, kGpiParameterCount>& at_bound, double factor) {
   const GpiParameterVector reported = gpi_vector_from_params(params);
+  std::vector<GpiFitParameter> parameters;
   for (std::size_t i = 0; i < kGpiParameterCount; ++i) {
     const auto parameter = static_cast<GpiParameter>(i);
     GpiFitParameter entry{parameter,    reported[i], bounds[0][i],
@@ -402,61 +391,78 @@ GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_o
     } else if (parameter == GpiParameter::rho) {
       entry.lower = entry.upper = reported[i];
     }
-    result.parameters.push_back(entry);
+    parameters.push_back(entry);
   }
+  return parameters;
+}
 
-  // Errors of the fitted model, simulated as a user would run it, each record from its own state.
+// Errors of the fitted model, simulated as a user would run it, each record from its own state.
+void add_errors(FitReport& report, const Model& model, std::span<const GpiRecord> records,
+                std::span<const GpiRecord> held_out, const FitData& data) {
   std::vector<double> predicted;
   Model::State end_of_first;
   for (std::size_t r = 0; r < records.size(); ++r) {
-    auto state = record_state(model, records[r].input, periodic);
-    const auto part = simulate(model, state, segments[r].input);
+    auto state = record_state(model, records[r].input, data.periodic);
+    const auto part = simulate(model, state, data.segments[r].input);
     predicted.insert(predicted.end(), part.begin(), part.end());
     if (r == 0) end_of_first = state;
   }
-  FitReport& report = result.report;
-  report.model = "gpi";
-  report.method = "levenberg-marquardt (ceres, autodiff)";
-  report.termination = detail::termination_of_ceres(best_summary);
-  report.message = fmt::format(
-      "{} record(s), {} starting points, best: start {} ({} screening + {} refining iterations); "
-      "ordering repair {:.3g}; ceres: {}",
-      records.size(), starts.size(), best, options.screening_iterations, refining, excess,
-      best_summary.message);
-  report.iterations = iterations;
-  report.parameters = kGpiParameterCount - 1;
-  if (std::count(at_bound.begin(), at_bound.end(), true) ==
-      static_cast<std::ptrdiff_t>(report.parameters)) {
-    report.take_verdict(FitQuality::degenerate,
-                        "every fitted parameter ended at a bound of its range: the data do not "
-                        "determine them within it");
-  }
-  report.initial_cost = start_costs[best];
   report.final_cost = 0.0;
-  for (std::size_t k = 0; k < all_output.size(); ++k) {
-    const double e = all_output[k] - predicted[k];
+  for (std::size_t k = 0; k < data.all_output.size(); ++k) {
+    const double e = data.all_output[k] - predicted[k];
     report.final_cost += 0.5 * e * e;
   }
-  report.fit = error_metrics(all_output, predicted);
-  if (split.has_validation()) {
+  report.fit = error_metrics(data.all_output, predicted);
+  if (data.split.has_validation()) {
     const auto& record = records.front();
-    report.validation = error_metrics(
-        record.output.subspan(split.validation_begin, split.validation_size()),
-        simulate(model, end_of_first,
-                 record.input.subspan(split.validation_begin, split.validation_size())));
+    const auto begin = data.split.validation_begin;
+    const auto size = data.split.validation_size();
+    report.validation =
+        error_metrics(record.output.subspan(begin, size),
+                      simulate(model, end_of_first, record.input.subspan(begin, size)));
   } else if (!held_out.empty()) {
     std::vector<double> measured, prediction;
     for (const auto& record : held_out) {
-      auto state = record_state(model, record.input, periodic);
+      auto state = record_state(model, record.input, data.periodic);
       const auto part = simulate(model, state, record.input);
       prediction.insert(prediction.end(), part.begin(), part.end());
       measured.insert(measured.end(), record.output.begin(), record.output.end());
     }
     report.validation = error_metrics(measured, prediction);
   }
-  report.seconds =
+}
+
+GpiFit fit(std::span<const GpiRecord> records, std::span<const GpiRecord> held_out,
+           const GpiFitOptions& options) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  validate_gpi_options(options);
+  const FitData data = fit_data(records, held_out, options);
+  const auto bounds = fit_bounds(data, options);
+  const auto starts = fit_starts(data, options, bounds);
+  const CostFunctor functor = gpi_cost_functor(data, options.m);
+  // Every start a few iterations; the best one is refined (multistart_fit.hpp).
+  const auto engine = engine_options(options, bounds, starts);
+  const auto result = detail::multistart_fit(functor, starts, engine, "GPI");
+
+  double factor = 1.0, excess = 0.0;
+  const GpiParams params =
+      fitted_params(result.q, data, options.m, records.front().input.front(), factor, excess);
+  GpiFit fit{Model(params), {}, {}, {}, starts.size(), result.best_start};
+  fit.initial_state = record_state(fit.model, records.front().input, data.periodic);
+  fit.parameters = reported_parameters(params, bounds, result.at_bound, factor);
+
+  fit.report = detail::report_of(result, 1.0, kGpiParameterCount - 1, "gpi",
+                                 "levenberg-marquardt (ceres, autodiff)");
+  fit.report.message = fmt::format(
+      "{} record(s), {} starting points, best: start {} ({} screening + {} refining iterations); "
+      "ordering repair {:.3g}; ceres: {}",
+      records.size(), starts.size(), result.best_start, options.screening_iterations,
+      result.refining_iterations, excess, result.message);
+  fit.report.initial_cost = data_cost(functor, starts[result.best_start]);
+  add_errors(fit.report, fit.model, records, held_out, data);
+  fit.report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
-  return result;
+  return fit;
 }
 
 }  // namespace

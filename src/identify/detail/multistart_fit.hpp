@@ -49,6 +49,7 @@ struct MultistartResult {
   Termination termination = Termination::failed;
   std::string message;
   std::size_t iterations = 0;
+  std::size_t refining_iterations = 0;  // of the best start after screening
   std::size_t best_start = 0;
   double initial_cost = 0.0;  // cost of the best start before it was iterated
   double final_cost = 0.0;
@@ -190,8 +191,9 @@ MultistartResult<N> multistart_fit(const Functor& functor,
   }
   if (options.max_iterations > 0 && best_summary.termination_type == ceres::NO_CONVERGENCE) {
     best_summary = solve_bounded(functor, result.q, options, options.max_iterations);
-    result.iterations += static_cast<std::size_t>(best_summary.num_successful_steps +
-                                                  best_summary.num_unsuccessful_steps);
+    result.refining_iterations = static_cast<std::size_t>(best_summary.num_successful_steps +
+                                                          best_summary.num_unsuccessful_steps);
+    result.iterations += result.refining_iterations;
   }
   result.termination = termination_of_ceres(best_summary);
   result.message = best_summary.message;
