@@ -498,6 +498,82 @@ double one_step_cost(const Rows& rows, const Narx::Params& p, const std::vector<
   return 0.5 * sum;
 }
 
+// The ridge penalty on the network weights (not on the linear term), when asked for.
+void add_ridge(ceres::Problem& problem, const Narx::Params& shape, std::size_t regressors,
+               const Rows& rows, const NarxFitOptions& options, std::vector<double>& weights) {
+  if (options.regularization <= 0.0) return;
+  problem.AddResidualBlock(new Ridge(weights.size(), penalised_count(shape, regressors),
+                                     options.regularization * static_cast<double>(rows.count())),
+                           nullptr, weights.data());
+}
+
+// Stage 2 of the fit: Levenberg-Marquardt on the free-run error from the stage-1 `weights`
+// (advanced in place; with early stopping, the best weights on its monitor part).
+ceres::Solver::Summary simulation_error_stage(const Rows& rows, const Narx::Params& shape,
+                                              std::size_t regressors, const NarxFitOptions& options,
+                                              ceres::Solver::Options& solver,
+                                              EarlyStopping* stopping,
+                                              std::vector<double>& weights) {
+  ceres::Problem problem;
+  problem.AddResidualBlock(new FreeRunResiduals(rows, 1 + shape.input_lags, shape.output_lags,
+                                                weights.size(), shape.hidden_sizes),
+                           nullptr, weights.data());
+  add_ridge(problem, shape, regressors, rows, options, weights);
+  solver.max_num_iterations = static_cast<int>(options.simulation_iterations);
+  if (stopping) stopping->start_from(weights, stopping->best_error());
+  detail::StagnationStop stagnation;
+  solver.callbacks.back() = &stagnation;  // a fresh cost history for this stage
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  if (stagnation.stopped()) summary.message = stagnation.message();
+  if (stopping && !stopping->best().empty()) weights = stopping->best();
+  return summary;
+}
+
+// The free-run errors of the fitted model over the fit part from rest, continued into the
+// validation part when it follows (else from rest at its start), and the one-step-ahead errors.
+// False when the model diverges on the fit part (the report then says so).
+bool add_free_run_errors(NarxFit& result, std::span<const double> input,
+                         std::span<const double> output, std::span<const double> validation_input,
+                         std::span<const double> validation_output, bool continue_into_validation) {
+  auto state = result.initial_state;
+  std::vector<double> simulated(input.size());
+  simulate(result.model, state, input, simulated);
+  if (!std::all_of(simulated.begin(), simulated.end(), [](double y) { return std::isfinite(y); })) {
+    result.report.termination = Termination::failed;
+    result.report.message = "the fitted model diverges in free run on the fit part";
+    result.report.fit.samples = input.size();
+    result.report.fit.rmse = result.report.fit.nrmse_percent = result.report.fit.max_error =
+        std::numeric_limits<double>::infinity();
+    return false;
+  }
+  result.report.fit = error_metrics(output, simulated);
+  auto one_step_state = result.initial_state;
+  result.one_step_fit =
+      error_metrics(output, narx_one_step_prediction(result.model, one_step_state, input, output));
+  if (!validation_input.empty()) {
+    auto validation_state =
+        continue_into_validation
+            ? state
+            : result.model.state_at_rest(validation_input.front(), validation_output.front());
+    auto one_step_validation_state = continue_into_validation ? one_step_state : validation_state;
+    std::vector<double> predicted(validation_input.size());
+    simulate(result.model, validation_state, validation_input, predicted);
+    if (std::all_of(predicted.begin(), predicted.end(),
+                    [](double y) { return std::isfinite(y); })) {
+      result.report.validation = error_metrics(validation_output, predicted);
+    } else {
+      result.report.validation = ErrorMetrics{
+          validation_input.size(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    }
+    result.one_step_validation = error_metrics(
+        validation_output, narx_one_step_prediction(result.model, one_step_validation_state,
+                                                    validation_input, validation_output));
+  }
+  return true;
+}
+
 NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
                   std::span<const double> validation_input,
                   std::span<const double> validation_output, bool continue_into_validation,
@@ -533,11 +609,7 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
     problem.AddResidualBlock(new BlockResiduals(rows, begin, end, weight_count, shape.hidden_sizes),
                              nullptr, weights.data());
   }
-  if (options.regularization > 0.0) {
-    problem.AddResidualBlock(new Ridge(weight_count, penalised_count(shape, regressors),
-                                       options.regularization * static_cast<double>(rows.count())),
-                             nullptr, weights.data());
-  }
+  add_ridge(problem, shape, regressors, rows, options, weights);
   const double initial_cost = one_step_cost(rows, shape, weights);
 
   auto solver =
@@ -567,25 +639,8 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   ceres::Solver::Summary simulation_summary;
   const bool simulation_stage = options.simulation_iterations > 0 && shape.output_lags > 0;
   if (simulation_stage) {
-    ceres::Problem simulation_problem(problem_options);
-    simulation_problem.AddResidualBlock(
-        new FreeRunResiduals(rows, 1 + shape.input_lags, shape.output_lags, weight_count,
-                             shape.hidden_sizes),
-        nullptr, weights.data());
-    if (options.regularization > 0.0) {
-      simulation_problem.AddResidualBlock(
-          new Ridge(weight_count, penalised_count(shape, regressors),
-                    options.regularization * static_cast<double>(rows.count())),
-          nullptr, weights.data());
-    }
-    solver.max_num_iterations = static_cast<int>(options.simulation_iterations);
-    if (stopping) stopping->start_from(weights, stopping->best_error());
-    detail::StagnationStop simulation_stagnation;
-    solver.callbacks.back() = &simulation_stagnation;  // a fresh cost history for this stage
-    ceres::Solve(solver, &simulation_problem, &simulation_summary);
-    if (simulation_stagnation.stopped())
-      simulation_summary.message = simulation_stagnation.message();
-    if (stopping && !stopping->best().empty()) weights = stopping->best();
+    simulation_summary = simulation_error_stage(rows, shape, regressors, options, solver,
+                                                stopping ? &*stopping : nullptr, weights);
   }
   if (stopping) {
     result.best_iteration = stopping->best_iteration();
@@ -617,43 +672,11 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   report.final_cost = one_step_cost(rows, shape, weights);
   report.parameters = weight_count;
 
-  // Free run over the fit part from rest, continued into the validation part when it follows.
-  auto state = result.initial_state;
-  std::vector<double> simulated(input.size());
-  simulate(result.model, state, input, simulated);
-  if (!std::all_of(simulated.begin(), simulated.end(), [](double y) { return std::isfinite(y); })) {
-    report.termination = Termination::failed;
-    report.message = "the fitted model diverges in free run on the fit part";
-    report.fit.samples = input.size();
-    report.fit.rmse = report.fit.nrmse_percent = report.fit.max_error =
-        std::numeric_limits<double>::infinity();
+  if (!add_free_run_errors(result, input, output, validation_input, validation_output,
+                           continue_into_validation)) {
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
-  }
-  report.fit = error_metrics(output, simulated);
-  auto one_step_state = result.initial_state;
-  result.one_step_fit =
-      error_metrics(output, narx_one_step_prediction(result.model, one_step_state, input, output));
-  if (!validation_input.empty()) {
-    auto validation_state =
-        continue_into_validation
-            ? state
-            : result.model.state_at_rest(validation_input.front(), validation_output.front());
-    auto one_step_validation_state = continue_into_validation ? one_step_state : validation_state;
-    std::vector<double> predicted(validation_input.size());
-    simulate(result.model, validation_state, validation_input, predicted);
-    if (std::all_of(predicted.begin(), predicted.end(),
-                    [](double y) { return std::isfinite(y); })) {
-      report.validation = error_metrics(validation_output, predicted);
-    } else {
-      report.validation = ErrorMetrics{
-          validation_input.size(), std::numeric_limits<double>::infinity(),
-          std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    }
-    result.one_step_validation = error_metrics(
-        validation_output, narx_one_step_prediction(result.model, one_step_validation_state,
-                                                    validation_input, validation_output));
   }
   report.message =
       fmt::format("{}{}; one-step-ahead RMSE {:.4g} (fit){}",
