@@ -54,24 +54,12 @@ const FieldTable<DuhemFitOptions>& backlash_like_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_backlash_like_request(const FitRequest& request) {
-  auto options = backlash_like_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_backlash_like(request.input, request.output, options);
-  return {std::make_unique<ModelAdapter<BacklashLikeCodec>>(result.model, result.initial_state),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry backlash_like_entry() {
-  ModelEntry entry;
-  entry.name = std::string(BacklashLikeCodec::name);
-  entry.description = "backlash-like (Su et al. 2000): w' = a|v'|(c v - w) + B1 v'; exact steps";
-  entry.parameters = BacklashLikeCodec::parameter_table().schema();
-  entry.fit_options = backlash_like_fit_option_table().schema();
-  entry.create = &create_from_json<BacklashLikeCodec>;
-  entry.fit = &fit_backlash_like_request;
+  auto entry = entry_of<BacklashLikeCodec>(
+      "backlash-like (Su et al. 2000): w' = a|v'|(c v - w) + B1 v'; exact steps");
+  set_fitter<BacklashLikeCodec>(entry, backlash_like_fit_option_table(), &fit_backlash_like);
   entry.example_params = {{"a", 1.0}, {"c", 1.0}, {"b1", 0.6}};
   return entry;
 }

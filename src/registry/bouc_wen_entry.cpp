@@ -76,25 +76,12 @@ const FieldTable<BoucWenFitOptions>& bouc_wen_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_bouc_wen_request(const FitRequest& request) {
-  auto options = bouc_wen_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_bouc_wen(request.input, request.output, options);
-  return {std::make_unique<ModelAdapter<BoucWenCodec>>(result.model, result.initial_state),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry bouc_wen_entry() {
-  ModelEntry entry;
-  entry.name = std::string(BoucWenCodec::name);
-  entry.description =
-      "Bouc-Wen: F = alpha_k k x + (1 - alpha_k) k z, bounded class; RK4 in the input; Ceres fit";
-  entry.parameters = BoucWenCodec::parameter_table().schema();
-  entry.fit_options = bouc_wen_fit_option_table().schema();
-  entry.create = &create_from_json<BoucWenCodec>;
-  entry.fit = &fit_bouc_wen_request;
+  auto entry = entry_of<BoucWenCodec>(
+      "Bouc-Wen: F = alpha_k k x + (1 - alpha_k) k z, bounded class; RK4 in the input; Ceres fit");
+  set_fitter<BoucWenCodec>(entry, bouc_wen_fit_option_table(), &fit_bouc_wen);
   entry.example_params = {{"a", 1.0}, {"beta", 0.6},      {"gamma", 0.2},
                           {"n", 1.5}, {"stiffness", 1.0}, {"alpha_k", 0.3}};
   entry.c_code = c_code_of<BoucWenCodec>();

@@ -99,13 +99,9 @@ FitOutcome fit_bouc_wen_oscillator_request(const FitRequest& request) {
 }  // namespace
 
 ModelEntry bouc_wen_oscillator_entry() {
-  ModelEntry entry;
-  entry.name = std::string(BoucWenOscillatorCodec::name);
-  entry.description =
-      "Bouc-Wen oscillator (identification benchmark): force in, displacement out; Ceres fit";
-  entry.parameters = BoucWenOscillatorCodec::parameter_table().schema();
+  auto entry = entry_of<BoucWenOscillatorCodec>(
+      "Bouc-Wen oscillator (identification benchmark): force in, displacement out; Ceres fit");
   entry.fit_options = bouc_wen_oscillator_fit_option_table().schema();
-  entry.create = &create_from_json<BoucWenOscillatorCodec>;
   entry.fit = &fit_bouc_wen_oscillator_request;
   const auto p = BoucWenOscillator::benchmark();
   entry.example_params = {

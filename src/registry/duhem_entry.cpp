@@ -67,25 +67,12 @@ const FieldTable<DuhemFitOptions>& duhem_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_duhem_request(const FitRequest& request) {
-  auto options = duhem_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_duhem(request.input, request.output, options);
-  return {std::make_unique<ModelAdapter<DuhemCodec>>(result.model, result.initial_state),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry duhem_entry() {
-  ModelEntry entry;
-  entry.name = std::string(DuhemCodec::name);
-  entry.description =
-      "Duhem (Coleman-Hodgdon): y' = alpha|v'|(f(v) - y) + g(v) v'; RK4 in the input; Ceres fit";
-  entry.parameters = DuhemCodec::parameter_table().schema();
-  entry.fit_options = duhem_fit_option_table().schema();
-  entry.create = &create_from_json<DuhemCodec>;
-  entry.fit = &fit_duhem_request;
+  auto entry = entry_of<DuhemCodec>(
+      "Duhem (Coleman-Hodgdon): y' = alpha|v'|(f(v) - y) + g(v) v'; RK4 in the input; Ceres fit");
+  set_fitter<DuhemCodec>(entry, duhem_fit_option_table(), &fit_duhem);
   entry.example_params = {
       {"alpha", 1.0}, {"f_slope", 0.5}, {"f_sat", 1.0}, {"v_sat", 1.0}, {"g_peak", 0.5}};
   return entry;

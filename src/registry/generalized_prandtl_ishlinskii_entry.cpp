@@ -210,21 +210,6 @@ const FieldTable<GpiFitOptions>& generalized_prandtl_ishlinskii_fit_option_table
   return table;
 }
 
-GpiFitOptions generalized_prandtl_ishlinskii_fit_options(const FitRequest& request) {
-  auto options =
-      generalized_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  return options;
-}
-
-FitOutcome fit_generalized_prandtl_ishlinskii_request(const FitRequest& request) {
-  const auto options = generalized_prandtl_ishlinskii_fit_options(request);
-  auto result = fit_generalized_prandtl_ishlinskii(request.input, request.output, options);
-  return {
-      std::make_unique<ModelAdapter<GpiCodec<TanhEnvelope>>>(result.model, result.initial_state),
-      std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry generalized_prandtl_ishlinskii_entry() {
@@ -256,9 +241,12 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
       {"input_max", "number", "input units", "operating range", {}},
       {"initial_input", "number", "input units", "at rest there initially (default 0)", {}},
   };
-  entry.fit_options = generalized_prandtl_ishlinskii_fit_option_table().schema();
   entry.create = &create_generalized_prandtl_ishlinskii;
-  entry.fit = &fit_generalized_prandtl_ishlinskii_request;
+  set_fitter<GpiCodec<TanhEnvelope>>(entry, generalized_prandtl_ishlinskii_fit_option_table(),
+                                     [](auto input, auto output, const auto& options) {
+                                       return fit_generalized_prandtl_ishlinskii(input, output,
+                                                                                 options);
+                                     });
   // The parameter set of the reference checks (pi_check.py).
   entry.example_params = {{"envelope", "tanh"},
                           {"ascending", {2.0, 0.8, -0.1, 0.05}},

@@ -71,12 +71,8 @@ struct IkutaSmaCodec {
 }  // namespace
 
 ModelEntry ikuta_sma_entry() {
-  ModelEntry entry;
-  entry.name = std::string(IkutaSmaCodec::name);
-  entry.description =
-      "Ikuta SMA model: cosine phase-fraction branches, local memory (no internal loops)";
-  entry.parameters = IkutaSmaCodec::parameter_table().schema();
-  entry.create = &create_from_json<IkutaSmaCodec>;
+  auto entry = entry_of<IkutaSmaCodec>(
+      "Ikuta SMA model: cosine phase-fraction branches, local memory (no internal loops)");
   entry.example_params = {{"martensite_finish", -0.8}, {"martensite_start", 0.2},
                           {"austenite_start", -0.2},   {"austenite_finish", 0.8},
                           {"output_austenite", 1.0},   {"output_martensite", -1.0},

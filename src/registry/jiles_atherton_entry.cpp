@@ -121,13 +121,9 @@ FitOutcome fit_jiles_atherton_request(const FitRequest& request) {
 }  // namespace
 
 ModelEntry jiles_atherton_entry() {
-  ModelEntry entry;
-  entry.name = std::string(JilesAthertonCodec::name);
-  entry.description =
-      "Jiles-Atherton: B(H) of ferromagnets, original or Venkataraman variant; Ceres fit";
-  entry.parameters = JilesAthertonCodec::parameter_table().schema();
+  auto entry = entry_of<JilesAthertonCodec>(
+      "Jiles-Atherton: B(H) of ferromagnets, original or Venkataraman variant; Ceres fit");
   entry.fit_options = jiles_atherton_fit_option_table().schema();
-  entry.create = &create_from_json<JilesAthertonCodec>;
   entry.fit = &fit_jiles_atherton_request;
   entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},
                           {"c", 0.2},  {"alpha", 1e-6}, {"variant", "original"}};

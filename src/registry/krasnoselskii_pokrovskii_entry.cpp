@@ -65,27 +65,14 @@ const FieldTable<KpFitOptions>& krasnoselskii_pokrovskii_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_krasnoselskii_pokrovskii_request(const FitRequest& request) {
-  auto options = krasnoselskii_pokrovskii_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_krasnoselskii_pokrovskii(request.input, request.output, options);
-  auto initial = result.model.initial_state();
-  return {std::make_unique<ModelAdapter<KpCodec>>(std::move(result.model), std::move(initial)),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry krasnoselskii_pokrovskii_entry() {
-  ModelEntry entry;
-  entry.name = std::string(KpCodec::name);
-  entry.description =
+  auto entry = entry_of<KpCodec>(
       "Krasnosel'skii-Pokrovskii: ramped relays on a triangular grid, continuous output; weights "
-      "by NNLS";
-  entry.parameters = KpCodec::parameter_table().schema();
-  entry.fit_options = krasnoselskii_pokrovskii_fit_option_table().schema();
-  entry.create = &create_from_json<KpCodec>;
-  entry.fit = &fit_krasnoselskii_pokrovskii_request;
+      "by NNLS");
+  set_fitter<KpCodec>(entry, krasnoselskii_pokrovskii_fit_option_table(),
+                      &fit_krasnoselskii_pokrovskii);
   entry.example_params = {{"levels", 6},       {"lower", -1.0},
                           {"upper", 1.0},      {"weights", std::vector<double>(21, 1.0 / 21.0)},
                           {"ramp_cells", 1.0}, {"offset", 0.0}};

@@ -120,27 +120,13 @@ const FieldTable<MaxwellSlipFitOptions>& maxwell_slip_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_maxwell_slip_request(const FitRequest& request) {
-  auto options = maxwell_slip_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_maxwell_slip(request.input, request.output, options);
-  return {std::make_unique<ModelAdapter<MaxwellSlipCodec>>(std::move(result.model),
-                                                           std::move(result.initial_state)),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry maxwell_slip_entry() {
-  ModelEntry entry;
-  entry.name = std::string(MaxwellSlipCodec::name);
-  entry.description =
+  auto entry = entry_of<MaxwellSlipCodec>(
       "Maxwell-slip: parallel elasto-slide elements (stop operators), clockwise or "
-      "counter-clockwise loops; inverse via the PI form; stiffnesses by NNLS";
-  entry.parameters = MaxwellSlipCodec::parameter_table().schema();
-  entry.fit_options = maxwell_slip_fit_option_table().schema();
-  entry.create = &create_from_json<MaxwellSlipCodec>;
-  entry.fit = &fit_maxwell_slip_request;
+      "counter-clockwise loops; inverse via the PI form; stiffnesses by NNLS");
+  set_fitter<MaxwellSlipCodec>(entry, maxwell_slip_fit_option_table(), &fit_maxwell_slip);
   entry.example_params = {{"stiffness", {3.0, 2.0, 1.0}},
                           {"break_away", {0.3, 0.4, 0.5}},
                           {"linear_stiffness", 0.5},

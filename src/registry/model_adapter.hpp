@@ -38,6 +38,7 @@
 #include "hyst/core/invert.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/registry/dynamic_model.hpp"
+#include "hyst/registry/model_registry.hpp"
 
 namespace hyst::detail {
 
@@ -186,6 +187,47 @@ template <class Codec>
 std::unique_ptr<DynamicModel> create_from_json(const nlohmann::json& params_json,
                                                const nlohmann::json* state_json) {
   return make_dynamic_model<Codec>(params_of_json<Codec>(params_json, "params"), state_json);
+}
+
+// An entry's `fit` for a fitter of one record: the request's options read by `table`, its
+// held-out fraction passed on, and the fitted model wrapped in the state the fit assumed (the
+// model's initial state when the fit result names none).
+template <class Codec, class Options, class Fit>
+FitOutcome fit_with_table(const FitRequest& request, const FieldTable<Options>& table, Fit fit) {
+  auto options = table.read(request.options, "fit options");
+  options.validate_fraction = request.validate_fraction;
+  auto result = fit(request.input, request.output, options);
+  if constexpr (requires { result.initial_state; }) {
+    return {std::make_unique<ModelAdapter<Codec>>(std::move(result.model),
+                                                  std::move(result.initial_state)),
+            std::move(result.report)};
+  } else {
+    auto initial = result.model.initial_state();
+    return {std::make_unique<ModelAdapter<Codec>>(std::move(result.model), std::move(initial)),
+            std::move(result.report)};
+  }
+}
+
+// An entry of a codec with a parameter table: its name, `description` (one line), its parameter
+// schema and `create`. The entry function then adds the example and the capabilities.
+template <class Codec>
+ModelEntry entry_of(std::string description) {
+  ModelEntry entry;
+  entry.name = std::string(Codec::name);
+  entry.description = std::move(description);
+  entry.parameters = Codec::parameter_table().schema();
+  entry.create = &create_from_json<Codec>;
+  return entry;
+}
+
+// Gives `entry` a fitter of one record, `fit(input, output, options)`, whose options `table` (a
+// static one: the entry keeps a reference) reads and documents.
+template <class Codec, class Options, class Fit>
+void set_fitter(ModelEntry& entry, const FieldTable<Options>& table, Fit fit) {
+  entry.fit_options = table.schema();
+  entry.fit = [&table, fit](const FitRequest& request) {
+    return fit_with_table<Codec>(request, table, fit);
+  };
 }
 
 // A state built by `make` (the model's validating make_state), with the state object's path in

@@ -130,16 +130,6 @@ const FieldTable<ModifiedPiFitOptions>& modified_prandtl_ishlinskii_fit_option_t
   return table;
 }
 
-FitOutcome fit_modified_prandtl_ishlinskii_request(const FitRequest& request) {
-  auto options =
-      modified_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_modified_prandtl_ishlinskii(request.input, request.output, options);
-  return {std::make_unique<ModelAdapter<ModifiedPiCodec>>(std::move(result.model),
-                                                          std::move(result.initial_state)),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry modified_prandtl_ishlinskii_entry() {
@@ -174,9 +164,9 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
        "upper limit the output is clamped to (default: none; a fit sets the record's maximum)",
        {}},
   };
-  entry.fit_options = modified_prandtl_ishlinskii_fit_option_table().schema();
   entry.create = &create_modified_prandtl_ishlinskii;
-  entry.fit = &fit_modified_prandtl_ishlinskii_request;
+  set_fitter<ModifiedPiCodec>(entry, modified_prandtl_ishlinskii_fit_option_table(),
+                              &fit_modified_prandtl_ishlinskii);
   entry.example_params = {{"thresholds", {0.0, 0.3, 0.7, 1.0}},
                           {"weights", {0.8, 0.5, 0.3, 0.2}},
                           {"pi_offset", 0.0},

@@ -108,30 +108,15 @@ const FieldTable<NarxFitOptions>& narx_fit_option_table() {
   return table;
 }
 
-NarxFitOptions narx_fit_options(const FitRequest& request) {
-  auto options = narx_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  return options;
-}
-
-FitOutcome fit_narx_request(const FitRequest& request) {
-  const auto options = narx_fit_options(request);
-  auto result = fit_narx(request.input, request.output, options);
-  return {std::make_unique<NarxAdapter>(result.model, result.initial_state),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry narx_entry() {
-  ModelEntry entry;
-  entry.name = std::string(NarxCodec::name);
-  entry.description =
-      "NARX: tanh network on past inputs, past outputs and play operators (black box); LM fit";
-  entry.parameters = NarxCodec::parameter_table().schema();
-  entry.fit_options = narx_fit_option_table().schema();
-  entry.create = &create_from_json<NarxCodec>;
-  entry.fit = &fit_narx_request;
+  auto entry = entry_of<NarxCodec>(
+      "NARX: tanh network on past inputs, past outputs and play operators (black box); LM fit");
+  set_fitter<NarxCodec>(entry, narx_fit_option_table(),
+                        [](auto input, auto output, const auto& options) {
+                          return fit_narx(input, output, options);
+                        });
   // 1 past input, 1 past output, 1 play, 2 neurons: 4 regressors, 2*4+2 + 2+1 + 4 = 17 weights.
   entry.example_params = {
       {"input_lags", 1},

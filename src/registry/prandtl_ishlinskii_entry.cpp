@@ -96,30 +96,15 @@ const FieldTable<PiFitOptions>& prandtl_ishlinskii_fit_option_table() {
   return table;
 }
 
-PiFitOptions prandtl_ishlinskii_fit_options(const FitRequest& request) {
-  auto options = prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  return options;
-}
-
-FitOutcome fit_prandtl_ishlinskii_request(const FitRequest& request) {
-  const auto options = prandtl_ishlinskii_fit_options(request);
-  auto result = fit_prandtl_ishlinskii(request.input, request.output, options);
-  return {std::make_unique<PrandtlIshlinskiiAdapter>(result.model, result.initial_state),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry prandtl_ishlinskii_entry() {
-  ModelEntry entry;
-  entry.name = std::string(PrandtlIshlinskiiCodec::name);
-  entry.description =
-      "Prandtl-Ishlinskii: weighted sum of play operators; analytic inverse; weights by NNLS";
-  entry.parameters = PrandtlIshlinskiiCodec::parameter_table().schema();
-  entry.fit_options = prandtl_ishlinskii_fit_option_table().schema();
-  entry.create = &create_from_json<PrandtlIshlinskiiCodec>;
-  entry.fit = &fit_prandtl_ishlinskii_request;
+  auto entry = entry_of<PrandtlIshlinskiiCodec>(
+      "Prandtl-Ishlinskii: weighted sum of play operators; analytic inverse; weights by NNLS");
+  set_fitter<PrandtlIshlinskiiCodec>(entry, prandtl_ishlinskii_fit_option_table(),
+                                     [](auto input, auto output, const auto& options) {
+                                       return fit_prandtl_ishlinskii(input, output, options);
+                                     });
   entry.example_params = {
       {"thresholds", {0.0, 0.3, 0.7, 1.0}}, {"weights", {0.8, 0.5, 0.3, 0.2}}, {"offset", 0.0}};
   entry.c_code = c_code_of<PrandtlIshlinskiiCodec>();

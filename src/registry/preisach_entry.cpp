@@ -18,7 +18,7 @@
 namespace hyst::detail {
 namespace {
 
-struct PreisachCodec {
+struct PreisachCodec : PreisachCodecCommon<InversePreisach> {
   using Model = Preisach;
   static constexpr std::string_view name = "preisach";
 
@@ -38,12 +38,6 @@ struct PreisachCodec {
     static const auto table = preisach_parameter_table<Model::Params>(everett);
     return table;
   }
-  static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
-    return preisach_state_to_json(state);
-  }
-  static PreisachState state_from_json(const Model& model, JsonFields& fields) {
-    return preisach_state_from_json(model, fields);
-  }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.weights.size() + 1;
   }
@@ -55,16 +49,6 @@ struct PreisachCodec {
         p.everett.levels, p.everett.lower, p.everett.upper, p.everett.weights.size(),
         to_string(p.everett.layout), model.total_weight(), p.offset, model.output_min(),
         model.output_max(), to_string(p.initial_state));
-  }
-  static bool has_inverse(const Model&) { return true; }
-  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model,
-                                                      const PreisachState& state,
-                                                      const InverseLimits& limits) {
-    InversePreisachOptions options;
-    if (std::isfinite(limits.input_min)) options.input_min = limits.input_min;
-    if (std::isfinite(limits.input_max)) options.input_max = limits.input_max;
-    return std::make_unique<InverseAdapter<InversePreisach, decltype(&preisach_state_to_json)>>(
-        InversePreisach(model, options), state, &preisach_state_to_json);
   }
 };
 
@@ -85,28 +69,13 @@ const FieldTable<PreisachWeightFitOptions>& preisach_fit_option_table() {
   return table;
 }
 
-FitOutcome fit_preisach_request(const FitRequest& request) {
-  auto options = preisach_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-
-  auto result = fit_preisach_weights(request.input, request.output, options);
-  auto initial = result.model.initial_state();
-  return {std::make_unique<PreisachAdapter>(std::move(result.model), std::move(initial)),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry preisach_entry() {
-  ModelEntry entry;
-  entry.name = std::string(PreisachCodec::name);
-  entry.description =
+  auto entry = entry_of<PreisachCodec>(
       "Preisach: weighted relays on a triangular grid, fast Everett form (cost independent of "
-      "the grid); numerical inverse; weights by NNLS";
-  entry.parameters = PreisachCodec::parameter_table().schema();
-  entry.fit_options = preisach_fit_option_table().schema();
-  entry.create = &create_from_json<PreisachCodec>;
-  entry.fit = &fit_preisach_request;
+      "the grid); numerical inverse; weights by NNLS");
+  set_fitter<PreisachCodec>(entry, preisach_fit_option_table(), &fit_preisach_weights);
   // The unweighted 231-relay model of the seed paper (mu = 1 for every relay).
   entry.example_params = {{"levels", 21},
                           {"lower", -1.0},

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,7 +15,9 @@
 #include "../detail/json_fields.hpp"
 #include "field_table.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/inverse/inverse_preisach.hpp"
 #include "hyst/models/preisach.hpp"
+#include "model_adapter.hpp"
 
 namespace hyst::detail {
 
@@ -55,5 +58,33 @@ PreisachState preisach_state_from_json(const Model& model, JsonFields& fields) {
     throw Error(fmt::format("{}: {}", fields.path(), error.what()));
   }
 }
+
+// What the codecs of both Preisach entries share: the state's JSON form and the numerical
+// inverse (InversePreisach or InverseTabulatedPreisach), within the given input limits.
+template <class Inverse>
+struct PreisachCodecCommon {
+  template <class Model>
+  static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
+    return preisach_state_to_json(state);
+  }
+  template <class Model>
+  static PreisachState state_from_json(const Model& model, JsonFields& fields) {
+    return preisach_state_from_json(model, fields);
+  }
+  template <class Model>
+  static bool has_inverse(const Model&) {
+    return true;
+  }
+  template <class Model>
+  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model,
+                                                      const PreisachState& state,
+                                                      const InverseLimits& limits) {
+    InversePreisachOptions options;
+    if (std::isfinite(limits.input_min)) options.input_min = limits.input_min;
+    if (std::isfinite(limits.input_max)) options.input_max = limits.input_max;
+    return std::make_unique<InverseAdapter<Inverse, decltype(&preisach_state_to_json)>>(
+        Inverse(model, options), state, &preisach_state_to_json);
+  }
+};
 
 }  // namespace hyst::detail

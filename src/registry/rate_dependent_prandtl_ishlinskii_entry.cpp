@@ -72,29 +72,14 @@ const FieldTable<RateDependentPiFitOptions>& rate_dependent_prandtl_ishlinskii_f
   return table;
 }
 
-FitOutcome fit_rate_dependent_prandtl_ishlinskii_request(const FitRequest& request) {
-  auto options =
-      rate_dependent_prandtl_ishlinskii_fit_option_table().read(request.options, "fit options");
-  options.validate_fraction = request.validate_fraction;
-  auto result = fit_rate_dependent_prandtl_ishlinskii(request.input, request.output, options);
-  auto initial = result.model.initial_state();
-  return {std::make_unique<ModelAdapter<RateDependentPiCodec>>(std::move(result.model),
-                                                               std::move(initial)),
-          std::move(result.report)};
-}
-
 }  // namespace
 
 ModelEntry rate_dependent_prandtl_ishlinskii_entry() {
-  ModelEntry entry;
-  entry.name = std::string(RateDependentPiCodec::name);
-  entry.description =
+  auto entry = entry_of<RateDependentPiCodec>(
       "rate-dependent PI: play thresholds r_j + beta |dv/dt|, loops widen with frequency; "
-      "weights by NNLS for a fixed beta";
-  entry.parameters = RateDependentPiCodec::parameter_table().schema();
-  entry.fit_options = rate_dependent_prandtl_ishlinskii_fit_option_table().schema();
-  entry.create = &create_from_json<RateDependentPiCodec>;
-  entry.fit = &fit_rate_dependent_prandtl_ishlinskii_request;
+      "weights by NNLS for a fixed beta");
+  set_fitter<RateDependentPiCodec>(entry, rate_dependent_prandtl_ishlinskii_fit_option_table(),
+                                   &fit_rate_dependent_prandtl_ishlinskii);
   entry.example_params = {{"thresholds", {0.0, 0.2, 0.4, 0.6}},
                           {"weights", {1.0, 0.6, 0.4, 0.2}},
                           {"rate_gain", 0.002},

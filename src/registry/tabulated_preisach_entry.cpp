@@ -18,7 +18,7 @@
 namespace hyst::detail {
 namespace {
 
-struct TabulatedPreisachCodec {
+struct TabulatedPreisachCodec : PreisachCodecCommon<InverseTabulatedPreisach> {
   using Model = TabulatedPreisach;
   static constexpr std::string_view name = "tabulated_preisach";
 
@@ -35,12 +35,6 @@ struct TabulatedPreisachCodec {
     static const auto table = preisach_parameter_table<Model::Params>(everett);
     return table;
   }
-  static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
-    return preisach_state_to_json(state);
-  }
-  static PreisachState state_from_json(const Model& model, JsonFields& fields) {
-    return preisach_state_from_json(model, fields);
-  }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.values.size() + 1;
   }
@@ -53,17 +47,6 @@ struct TabulatedPreisachCodec {
         model.total_weight(), p.offset, model.output_min(), model.output_max(),
         to_string(p.initial_state));
   }
-  static bool has_inverse(const Model&) { return true; }
-  static std::unique_ptr<DynamicInverse> make_inverse(const Model& model,
-                                                      const PreisachState& state,
-                                                      const InverseLimits& limits) {
-    InversePreisachOptions options;
-    if (std::isfinite(limits.input_min)) options.input_min = limits.input_min;
-    if (std::isfinite(limits.input_max)) options.input_max = limits.input_max;
-    return std::make_unique<
-        InverseAdapter<InverseTabulatedPreisach, decltype(&preisach_state_to_json)>>(
-        InverseTabulatedPreisach(model, options), state, &preisach_state_to_json);
-  }
 };
 
 }  // namespace
@@ -74,13 +57,9 @@ std::unique_ptr<DynamicModel> tabulated_preisach_model(TabulatedPreisach model) 
 }
 
 ModelEntry tabulated_preisach_entry() {
-  ModelEntry entry;
-  entry.name = std::string(TabulatedPreisachCodec::name);
-  entry.description =
+  auto entry = entry_of<TabulatedPreisachCodec>(
       "Preisach with a tabulated Everett function (bilinear between levels): the model "
-      "identified from FORCs by 'hyst fit preisach --forc FILE'; numerical inverse";
-  entry.parameters = TabulatedPreisachCodec::parameter_table().schema();
-  entry.create = &create_from_json<TabulatedPreisachCodec>;
+      "identified from FORCs by 'hyst fit preisach --forc FILE'; numerical inverse");
   // Four uniform cells over [-1, 1], each cell weight 0.1: E(x_a, x_c) = 0.1 (a-c)(a-c+1)/2,
   // total weight 1 (the output spans [-1, 1]).
   std::vector<double> values;
