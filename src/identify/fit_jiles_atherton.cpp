@@ -173,7 +173,7 @@ class LoopError {
         b_scale_(b_scale),
         periodic_(periodic) {
     for (const auto& loop : loops_)
-      residuals_ += loop.field.size();
+      residuals_ += loop.input.size();
   }
   std::size_t residuals() const { return residuals_; }
 
@@ -213,9 +213,9 @@ class LoopError {
     const double max_step = std::min(max_step_, value_of(p.k) / 20.0);
     std::size_t r = 0;
     for (const auto& loop : loops_) {
-      run_loop(p, variant_, loop.field, max_step, periodic_, residuals + r);
-      for (std::size_t k = 0; k < loop.field.size(); ++k, ++r) {
-        residuals[r] = (residuals[r] - loop.flux_density[k]) / b_scale_;
+      run_loop(p, variant_, loop.input, max_step, periodic_, residuals + r);
+      for (std::size_t k = 0; k < loop.input.size(); ++k, ++r) {
+        residuals[r] = (residuals[r] - loop.output[k]) / b_scale_;
         if (!std::isfinite(value_of(residuals[r]))) return false;
       }
     }
@@ -234,21 +234,21 @@ class LoopError {
 
 void check_loop(const BhLoop& loop, std::string_view what, std::size_t index) {
   const std::string name = fmt::format("{}[{}]", what, index);
-  require_same_size(loop.field.size(), name + ".field", loop.flux_density.size(),
-                    name + ".flux_density");
-  if (loop.field.size() < 8) {
-    throw Error(fmt::format("{} has {} samples, at least 8 needed", name, loop.field.size()));
+  require_same_size(loop.input.size(), name + ".input (H)", loop.output.size(),
+                    name + ".output (B)");
+  if (loop.input.size() < 8) {
+    throw Error(fmt::format("{} has {} samples, at least 8 needed", name, loop.input.size()));
   }
-  require_finite(loop.field, name + ".field");
-  require_finite(loop.flux_density, name + ".flux_density");
-  const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
-  if (!(*hi > *lo)) throw Error(fmt::format("{}: the field is constant", name), "field");
+  require_finite(loop.input, name + ".input (H)");
+  require_finite(loop.output, name + ".output (B)");
+  const auto [lo, hi] = std::minmax_element(loop.input.begin(), loop.input.end());
+  if (!(*hi > *lo)) throw Error(fmt::format("{}: the field H (input) is constant", name), "input");
 }
 
 std::vector<double> concatenate_measured(std::span<const BhLoop> loops) {
   std::vector<double> all;
   for (const auto& loop : loops)
-    all.insert(all.end(), loop.flux_density.begin(), loop.flux_density.end());
+    all.insert(all.end(), loop.output.begin(), loop.output.end());
   return all;
 }
 
@@ -256,7 +256,7 @@ std::vector<double> concatenate_simulated(const JilesAtherton& model, std::span<
                                           bool periodic) {
   std::vector<double> all;
   for (const auto& loop : loops) {
-    const auto b = simulate_bh_loop(model, loop.field, periodic);
+    const auto b = simulate_bh_loop(model, loop.input, periodic);
     all.insert(all.end(), b.begin(), b.end());
   }
   return all;
@@ -280,23 +280,23 @@ std::vector<JilesAtherton::Params> jiles_atherton_starts(const BhLoop& loop,
                                                          JilesAthertonVariant variant) {
   check_loop(loop, "loops", 0);
   double m_max = 0.0;
-  for (std::size_t k = 0; k < loop.field.size(); ++k)
-    m_max = std::max(m_max, std::abs(loop.flux_density[k] / kMu0 - loop.field[k]));
+  for (std::size_t k = 0; k < loop.input.size(); ++k)
+    m_max = std::max(m_max, std::abs(loop.output[k] / kMu0 - loop.input[k]));
   // Coercive field: |H| where B changes sign (mean over the crossings), linearly interpolated.
   double coercive = 0.0;
   int crossings = 0;
-  const std::size_t n = loop.field.size();
+  const std::size_t n = loop.input.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const double b0 = loop.flux_density[k];
-    const double b1 = loop.flux_density[(k + 1) % n];
+    const double b0 = loop.output[k];
+    const double b1 = loop.output[(k + 1) % n];
     if ((b0 < 0.0) != (b1 < 0.0) && b1 != b0) {
-      const double h0 = loop.field[k];
-      const double h1 = loop.field[(k + 1) % n];
+      const double h0 = loop.input[k];
+      const double h1 = loop.input[(k + 1) % n];
       coercive += std::abs(h0 + (h1 - h0) * (-b0) / (b1 - b0));
       ++crossings;
     }
   }
-  const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
+  const auto [lo, hi] = std::minmax_element(loop.input.begin(), loop.input.end());
   coercive = crossings > 0 ? coercive / crossings : 0.0;
   if (!(coercive > 0.0)) coercive = 0.05 * (*hi - *lo);
   if (!(m_max > 0.0)) throw Error("Jiles-Atherton fit: the loop has no magnetisation");
@@ -341,15 +341,15 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   double b_sum = 0.0;
   std::size_t count = 0;
   for (const auto& loop : loops) {
-    const auto [lo, hi] = std::minmax_element(loop.field.begin(), loop.field.end());
+    const auto [lo, hi] = std::minmax_element(loop.input.begin(), loop.input.end());
     span = std::max(span, *hi - *lo);
-    for (double b : loop.flux_density) {
+    for (double b : loop.output) {
       b_sum += b * b;
       ++count;
     }
   }
   const double b_scale = std::sqrt(b_sum / static_cast<double>(count));
-  if (!(b_scale > 0.0)) throw Error("Jiles-Atherton fit: B is zero", "flux_density");
+  if (!(b_scale > 0.0)) throw Error("Jiles-Atherton fit: B is zero", "output");
   const double max_step = options.max_field_step > 0.0 ? options.max_field_step : span / 2000.0;
 
   auto starts = options.starts;

@@ -84,8 +84,27 @@ const FieldTable<JilesAthertonFitOptions>& jiles_atherton_fit_option_table() {
       FieldTable<O>(Presence::optional, demagnetised_start())
           .add("variant", &O::variant, jiles_atherton_variant_from_string,
                "original or venkataraman")
+          .add_custom(
+              {"initial_state", "string", "",
+               "demagnetised (at H = 0) or periodic (the record is one loop in steady "
+               "state), as the initial_state of the other fitters",
+               "demagnetised"},
+              Presence::optional,
+              [](JsonFields& fields, O& options) {
+                const auto text = fields.string("initial_state");
+                if (text != "demagnetised" && text != "periodic") {
+                  throw Error(
+                      fmt::format("{}: unknown initial state '{}' (expected "
+                                  "demagnetised or periodic)",
+                                  fields.path_of("initial_state"), text));
+                }
+                options.periodic = text == "periodic";
+              },
+              [](const O& options, nlohmann::json& json) {
+                json["initial_state"] = options.periodic ? "periodic" : "demagnetised";
+              })
           .add("periodic", &O::periodic, "",
-               "the record is one loop in steady state (false: demagnetised)")
+               "the same as initial_state = periodic (true) or demagnetised (false)")
           .add("max_field_step", &O::max_field_step, "A/m",
                "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000")
           .add("starts", &O::starts, JilesAthertonCodec::parameter_table(),

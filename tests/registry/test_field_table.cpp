@@ -284,5 +284,31 @@ TEST(FieldTable, GpiBoundsAndStartsAreFitOptions) {
             0u);
 }
 
+// Every fitter with a choice of start names it initial_state; "periodic" means the same in each.
+TEST(FieldTable, OneInitialStateVocabulary) {
+  for (const auto* name : {"pi", "modified_pi", "gpi", "jiles_atherton", "preisach"}) {
+    SCOPED_TRACE(name);
+    const auto& entry = ModelRegistry::builtin().find(name);
+    bool found = false;
+    for (const auto& option : entry.fit_options)
+      found = found || option.name == "initial_state";
+    EXPECT_TRUE(found);
+  }
+  const auto& ja = ModelRegistry::builtin().find("jiles_atherton");
+  const std::vector<double> samples(20, 0.0);
+  FitRequest request;
+  request.input = samples;
+  request.output = samples;
+  request.options = {{"initial_state", "virgin"}};
+  try {
+    ja.fit(request);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "fit options.initial_state: unknown initial state 'virgin' (expected "
+                 "demagnetised or periodic)");
+  }
+}
+
 }  // namespace
 }  // namespace hyst

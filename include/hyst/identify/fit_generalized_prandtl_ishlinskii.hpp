@@ -57,6 +57,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 
@@ -167,11 +168,8 @@ GpiFit fit_generalized_prandtl_ishlinskii(std::span<const double> input,
                                           std::span<const double> validation_output,
                                           const GpiFitOptions& options = {});
 
-//! One input/output record, e.g. one measured loop.
-struct GpiRecord {
-  std::span<const double> input;
-  std::span<const double> output;
-};
+//! One input/output record, e.g. one measured loop (the record type of every fitter).
+using GpiRecord = FitRecord;
 
 //! Fits one model to several records at once (e.g. a major loop and a minor loop, which together
 //! identify the threshold distribution a major loop alone leaves open), each record starting from

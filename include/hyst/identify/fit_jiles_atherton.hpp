@@ -23,16 +23,15 @@
 #include <span>
 #include <vector>
 
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/jiles_atherton.hpp"
 
 namespace hyst {
 
 //! One closed B(H) loop (one period), H [A/m] and B [T].
-struct BhLoop {
-  std::span<const double> field;
-  std::span<const double> flux_density;
-};
+//! One closed B(H) loop (one period): input = H [A/m], output = B [T].
+using BhLoop = FitRecord;
 
 struct JilesAthertonFitOptions {
   JilesAthertonVariant variant = JilesAthertonVariant::original;
