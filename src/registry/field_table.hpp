@@ -185,7 +185,20 @@ class FieldTable {
           [outer, write = field.write](const S& source, nlohmann::json& json) {
             write(source.*outer, json);
           });
+      if (field.applies) {
+        only_if([outer, applies = field.applies](const S& s) { return applies(s.*outer); },
+                field.unused_when);
+      }
     }
+    return *this;
+  }
+
+  // The field added last exists only where `applies` holds for the fields before it (e.g. the
+  // parameters of one density kind): elsewhere it is neither read nor written, and a file that
+  // gives it is refused with "<path>: not used <unused_when>".
+  FieldTable& only_if(std::function<bool(const S&)> applies, std::string unused_when) {
+    fields_.back().applies = std::move(applies);
+    fields_.back().unused_when = std::move(unused_when);
     return *this;
   }
 
@@ -200,6 +213,13 @@ class FieldTable {
   // `fields` is the caller's, so that a struct may be read with a few fields of its own.
   void read_into(JsonFields& fields, S& target) const {
     for (const auto& field : fields_) {
+      if (field.applies && !field.applies(target)) {
+        if (fields.has(field.info.name)) {
+          throw Error(
+              fmt::format("{}: not used {}", fields.path_of(field.info.name), field.unused_when));
+        }
+        continue;
+      }
       if (field.presence == Presence::optional && !fields.has(field.info.name)) continue;
       field.read(fields, target);
     }
@@ -215,8 +235,9 @@ class FieldTable {
   }
   nlohmann::json write(const S& source) const {
     auto json = nlohmann::json::object();
-    for (const auto& field : fields_)
-      field.write(source, json);
+    for (const auto& field : fields_) {
+      if (!field.applies || field.applies(source)) field.write(source, json);
+    }
     return json;
   }
   // The documented fields in table order, with the struct's defaults of the optional ones.
@@ -231,6 +252,8 @@ class FieldTable {
     Presence presence;
     Reader read;
     Writer write;
+    std::function<bool(const S&)> applies = {};  // empty: always
+    std::string unused_when = {};
   };
 
   template <class T>
@@ -273,7 +296,7 @@ class FieldTable {
 
   void add_field(ParameterInfo info, Presence presence, Reader read, Writer write) {
     schema_.push_back(info);
-    fields_.push_back({std::move(info), presence, std::move(read), std::move(write)});
+    fields_.push_back({std::move(info), presence, std::move(read), std::move(write), {}, {}});
   }
 
   Presence default_presence_;

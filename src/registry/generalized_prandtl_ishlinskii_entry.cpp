@@ -15,32 +15,45 @@
 namespace hyst::detail {
 namespace {
 
+const FieldTable<GpiParams>& gpi_parameter_table() {
+  using P = GpiParams;
+  const auto exponential = [](const P& p) { return p.density == GpiDensity::exponential; };
+  const auto free_density = [](const P& p) { return p.density == GpiDensity::free; };
+  static const auto table =
+      FieldTable<P>()
+          .add("envelope", &P::envelope, envelope_kind_from_string, "tanh, arctan or linear")
+          .add("ascending", &P::ascending, "",
+               "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)")
+          .add("descending", &P::descending, "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r")
+          .add("density", &P::density, gpi_density_from_string,
+               "exponential (rho, tau, alpha, m) or free (thresholds, weights)")
+          .add("rho", &P::rho, "", "exponential density p_j = rho exp(-tau r_j), rho > 0")
+          .only_if(exponential, "with the free density")
+          .add("tau", &P::tau, "1 / envelope units", "decay of the density")
+          .only_if(exponential, "with the free density")
+          .add("alpha", &P::alpha, "envelope units", "threshold spacing r_j = alpha j, alpha > 0")
+          .only_if(exponential, "with the free density")
+          .add("m", &P::m, "", "operators j = 0..m")
+          .only_if(exponential, "with the free density")
+          .add("thresholds", &P::thresholds, "envelope units", "free density: 0 = r_0 < r_1 < ...")
+          .only_if(free_density, "with the exponential density")
+          .add("weights", &P::weights, "", "free density: p_j")
+          .only_if(free_density, "with the exponential density")
+          .add("input_min", &P::input_min, "input units",
+               "operating range (ordering checked on it)")
+          .add("input_max", &P::input_max, "input units", "operating range")
+          .add("initial_input", &P::initial_input, "input units", "at rest there initially",
+               Presence::optional);
+  return table;
+}
+
 template <class E>
 struct GpiCodec {
   using Model = GeneralizedPrandtlIshlinskii<E>;
   using Inverse = InverseGeneralizedPrandtlIshlinskii<E>;
   static constexpr std::string_view name = "gpi";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    nlohmann::json json = {{"envelope", std::string(to_string(p.envelope))},
-                           {"ascending", p.ascending},
-                           {"descending", p.descending},
-                           {"density", std::string(to_string(p.density))}};
-    if (p.density == GpiDensity::exponential) {
-      json["rho"] = p.rho;
-      json["tau"] = p.tau;
-      json["alpha"] = p.alpha;
-      json["m"] = p.m;
-    } else {
-      json["thresholds"] = p.thresholds;
-      json["weights"] = p.weights;
-    }
-    json["input_min"] = p.input_min;
-    json["input_max"] = p.input_max;
-    json["initial_input"] = p.initial_input;
-    return json;
-  }
+  static const FieldTable<GpiParams>& parameter_table() { return gpi_parameter_table(); }
   static nlohmann::json state_to_json(const Model&, const typename Model::State& state) {
     return {{"play", state.play}};
   }
@@ -86,32 +99,9 @@ struct GpiCodec {
   }
 };
 
-GpiParams params_from_json(JsonFields& fields) {
-  GpiParams params;
-  params.envelope = fields.parsed("envelope", envelope_kind_from_string);
-  params.ascending = fields.numbers("ascending");
-  params.descending = fields.numbers("descending");
-  params.density = fields.parsed("density", gpi_density_from_string);
-  if (params.density == GpiDensity::exponential) {
-    params.rho = fields.number("rho");
-    params.tau = fields.number("tau");
-    params.alpha = fields.number("alpha");
-    params.m = fields.count("m");
-  } else {
-    params.thresholds = fields.numbers("thresholds");
-    params.weights = fields.numbers("weights");
-  }
-  params.input_min = fields.number("input_min");
-  params.input_max = fields.number("input_max");
-  params.initial_input = fields.number_or("initial_input", 0.0);
-  return params;
-}
-
 std::unique_ptr<DynamicModel> create_generalized_prandtl_ishlinskii(
     const nlohmann::json& params_json, const nlohmann::json* state_json) {
-  JsonFields fields(params_json, "params");
-  auto params = params_from_json(fields);
-  fields.finish();
+  const auto params = gpi_parameter_table().read(params_json, "params");
   return visit_envelope(params.envelope, [&]<class E>(E) {
     return make_dynamic_model<GpiCodec<E>>(params, state_json);
   });
@@ -218,29 +208,7 @@ ModelEntry generalized_prandtl_ishlinskii_entry() {
   entry.description =
       "generalized Prandtl-Ishlinskii (MSMA): plays on tanh/arctan/linear envelopes, exponential "
       "density; analytic inverse (IGPI); nonlinear fit (Ceres)";
-  entry.parameters = {
-      {"envelope", "string", "", "tanh, arctan or linear", {}},
-      {"ascending",
-       "array of numbers",
-       "",
-       "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)",
-       {}},
-      {"descending", "array of numbers", "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r", {}},
-      {"density",
-       "string",
-       "",
-       "exponential (rho, tau, alpha, m) or free (thresholds, weights)",
-       {}},
-      {"rho", "number", "", "exponential density p_j = rho exp(-tau r_j), rho > 0", {}},
-      {"tau", "number", "1 / envelope units", "decay of the density", {}},
-      {"alpha", "number", "envelope units", "threshold spacing r_j = alpha j, alpha > 0", {}},
-      {"m", "whole number", "", "operators j = 0..m", {}},
-      {"thresholds", "array of numbers", "envelope units", "free density: 0 = r_0 < r_1 < ...", {}},
-      {"weights", "array of numbers", "", "free density: p_j", {}},
-      {"input_min", "number", "input units", "operating range (ordering checked on it)", {}},
-      {"input_max", "number", "input units", "operating range", {}},
-      {"initial_input", "number", "input units", "at rest there initially (default 0)", {}},
-  };
+  entry.parameters = gpi_parameter_table().schema();
   entry.create = &create_generalized_prandtl_ishlinskii;
   set_fitter<GpiCodec<TanhEnvelope>>(entry, generalized_prandtl_ishlinskii_fit_option_table(),
                                      [](auto input, auto output, const auto& options) {

@@ -17,22 +17,61 @@
 namespace hyst::detail {
 namespace {
 
+// A clamp limit of the output: infinite (no clamp) by default and then left out of the file, as
+// JSON has no infinity.
+void add_output_limit(FieldTable<ModifiedPrandtlIshlinskii::Params>& table, std::string_view name,
+                      double ModifiedPrandtlIshlinskii::Params::*member, std::string_view side) {
+  const std::string key(name);
+  table.add_custom(
+      {key,
+       "number",
+       "output units",
+       fmt::format("{} limit the output is clamped to (default: none; a fit sets the record's "
+                   "{})",
+                   side, side == "lower" ? "minimum" : "maximum"),
+       {}},
+      Presence::optional,
+      [key, member](JsonFields& fields, ModifiedPrandtlIshlinskii::Params& params) {
+        params.*member = fields.number(key);
+      },
+      [key, member](const ModifiedPrandtlIshlinskii::Params& params, nlohmann::json& json) {
+        if (std::isfinite(params.*member)) json[key] = params.*member;
+      });
+}
+
 struct ModifiedPiCodec {
   using Model = ModifiedPrandtlIshlinskii;
   static constexpr std::string_view name = "modified_pi";
 
-  static nlohmann::json params_to_json(const Model& model) {
-    const auto& p = model.params();
-    nlohmann::json json{{"thresholds", p.pi.thresholds},
-                        {"weights", p.pi.weights},
-                        {"pi_offset", p.pi.offset},
-                        {"dead_zone_thresholds", p.dead_zone.thresholds},
-                        {"dead_zone_weights", p.dead_zone.weights},
-                        {"offset", p.offset}};
-    // Infinite limits (no clamp) are left out: JSON has no infinity.
-    if (std::isfinite(p.output_min)) json["output_min"] = p.output_min;
-    if (std::isfinite(p.output_max)) json["output_max"] = p.output_max;
-    return json;
+  static const FieldTable<Model::Params>& parameter_table() {
+    using P = Model::Params;
+    using Pi = PrandtlIshlinskii::Params;
+    using DeadZone = DeadZoneSuperposition::Params;
+    // The file's fields are flat: the PI part's offset is "pi_offset", the dead zone's fields
+    // have "dead_zone_" in front.
+    static const auto pi =
+        FieldTable<Pi>()
+            .add("thresholds", &Pi::thresholds, "input units",
+                 "play half-widths 0 = r_0 < r_1 < ...")
+            .add("weights", &Pi::weights, "output / input units", "p_j, one per threshold")
+            .add("pi_offset", &Pi::offset, "output units", "offset of the PI part",
+                 Presence::optional);
+    static const auto dead_zone = FieldTable<DeadZone>()
+                                      .add("dead_zone_thresholds", &DeadZone::thresholds,
+                                           "output units", "d_i, increasing, one of them 0")
+                                      .add("dead_zone_weights", &DeadZone::weights, "",
+                                           "g_i; invertible iff outward partial sums > 0");
+    static const auto table = [] {
+      auto table = FieldTable<P>()
+                       .add_all(&P::pi, pi)
+                       .add_all(&P::dead_zone, dead_zone)
+                       .add("offset", &P::offset, "output units",
+                            "y_off added after the dead zones", Presence::optional);
+      add_output_limit(table, "output_min", &P::output_min, "lower");
+      add_output_limit(table, "output_max", &P::output_max, "upper");
+      return table;
+    }();
+    return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return play_state_to_json(state);
@@ -70,22 +109,6 @@ struct ModifiedPiCodec {
   }
 };
 
-ModifiedPrandtlIshlinskii::Params modified_prandtl_ishlinskii_params_from_json(
-    const nlohmann::json& params_json, const std::string& path) {
-  JsonFields fields(params_json, path);
-  ModifiedPrandtlIshlinskii::Params params;
-  params.pi.thresholds = fields.numbers("thresholds");
-  params.pi.weights = fields.numbers("weights");
-  params.pi.offset = fields.number_or("pi_offset", 0.0);
-  params.dead_zone.thresholds = fields.numbers("dead_zone_thresholds");
-  params.dead_zone.weights = fields.numbers("dead_zone_weights");
-  params.offset = fields.number_or("offset", 0.0);
-  params.output_min = fields.number_or("output_min", params.output_min);
-  params.output_max = fields.number_or("output_max", params.output_max);
-  fields.finish();
-  return params;
-}
-
 std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"pi.offset", "pi_offset"},
                                  {"pi.", ""},
@@ -97,7 +120,7 @@ std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
 
 std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann::json& params_json,
                                                                  const nlohmann::json* state_json) {
-  auto params = modified_prandtl_ishlinskii_params_from_json(params_json, "params");
+  auto params = params_of_json<ModifiedPiCodec>(params_json, "params");
   // The model's fields are "pi.thresholds" etc.; in the file they are flat.
   try {
     return make_dynamic_model<ModifiedPiCodec>(std::move(params), state_json);
@@ -138,32 +161,7 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
   entry.description =
       "modified PI (Kuhnen): PI followed by dead-zone superposition; analytic inverse; weights "
       "by constrained least squares";
-  entry.parameters = {
-      {"thresholds", "array of numbers", "input units", "play half-widths 0 = r_0 < r_1 < ...", {}},
-      {"weights", "array of numbers", "output / input units", "p_j, one per threshold", {}},
-      {"pi_offset", "number", "output units", "offset of the PI part (default 0)", {}},
-      {"dead_zone_thresholds",
-       "array of numbers",
-       "output units",
-       "d_i, increasing, one of them 0",
-       {}},
-      {"dead_zone_weights",
-       "array of numbers",
-       "",
-       "g_i; invertible iff outward partial sums > 0",
-       {}},
-      {"offset", "number", "output units", "y_off added after the dead zones (default 0)", {}},
-      {"output_min",
-       "number",
-       "output units",
-       "lower limit the output is clamped to (default: none; a fit sets the record's minimum)",
-       {}},
-      {"output_max",
-       "number",
-       "output units",
-       "upper limit the output is clamped to (default: none; a fit sets the record's maximum)",
-       {}},
-  };
+  entry.parameters = ModifiedPiCodec::parameter_table().schema();
   entry.create = &create_modified_prandtl_ishlinskii;
   set_fitter<ModifiedPiCodec>(entry, modified_prandtl_ishlinskii_fit_option_table(),
                               &fit_modified_prandtl_ishlinskii);

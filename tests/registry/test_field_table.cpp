@@ -284,6 +284,37 @@ TEST(FieldTable, GpiBoundsAndStartsAreFitOptions) {
             0u);
 }
 
+// Fields that exist for one kind only: the GPI's density parameters.
+TEST(FieldTable, FieldsOfOneKindOnly) {
+  const auto& gpi = ModelRegistry::builtin().find("gpi");
+  const auto error_of_params = [&](const nlohmann::json& params) {
+    try {
+      gpi.create(params, nullptr);
+    } catch (const Error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  auto params = gpi.example_params;
+  EXPECT_EQ(error_of_params(params), "no error");
+  params["thresholds"] = {0.0, 0.5};
+  EXPECT_EQ(error_of_params(params), "params.thresholds: not used with the exponential density");
+  params.erase("thresholds");
+  params.erase("rho");
+  EXPECT_EQ(error_of_params(params), "params.rho: missing field");
+
+  // The free density: rho & co. are neither needed nor written.
+  auto free_params = gpi.example_params;
+  for (const char* name : {"rho", "tau", "alpha", "m"})
+    free_params.erase(name);
+  free_params["density"] = "free";
+  free_params["thresholds"] = {0.0, 0.3, 0.6};
+  free_params["weights"] = {0.5, 0.3, 0.2};
+  const auto file = model_to_json(*gpi.create(free_params, nullptr));
+  EXPECT_FALSE(file.at("params").contains("rho"));
+  EXPECT_EQ(file.at("params").at("weights").size(), 3u);
+}
+
 // Every fitter with a choice of start names it initial_state; "periodic" means the same in each.
 TEST(FieldTable, OneInitialStateVocabulary) {
   for (const auto* name : {"pi", "modified_pi", "gpi", "jiles_atherton", "preisach"}) {
