@@ -38,6 +38,20 @@ double time_at(const TimeGrid& grid, std::size_t k) {
   return static_cast<double>(k) * grid.dt;
 }
 
+//! The grid and the fields every periodic signal has (amplitude, frequency >= 0, phase, offset;
+//! a time constant > 0 where the envelope has one), named "<signal> <field>" in messages.
+template <class Signal>
+void validate_periodic(const TimeGrid& grid, const Signal& signal, std::string_view name) {
+  validate(grid);
+  require_finite(signal.amplitude, fmt::format("{} amplitude", name));
+  require_non_negative(signal.frequency, fmt::format("{} frequency", name));
+  if constexpr (requires { signal.time_constant; }) {
+    require_positive(signal.time_constant, fmt::format("{} time_constant", name));
+  }
+  require_finite(signal.phase, fmt::format("{} phase", name));
+  require_finite(signal.offset, fmt::format("{} offset", name));
+}
+
 //! sin(2 pi c + phase) with the whole cycles removed from c first, which keeps the argument small
 //! (and the result accurate) for long signals.
 double sin_cycles(double cycles, double phase) {
@@ -66,22 +80,14 @@ std::vector<double> times(const TimeGrid& grid) {
 }
 
 std::vector<double> generate(const TimeGrid& grid, const Sine& signal) {
-  validate(grid);
-  require_finite(signal.amplitude, "sine amplitude");
-  require_non_negative(signal.frequency, "sine frequency");
-  require_finite(signal.phase, "sine phase");
-  require_finite(signal.offset, "sine offset");
+  validate_periodic(grid, signal, "sine");
   return sample(grid, "sine", [&](double t) {
     return signal.amplitude * sin_cycles(signal.frequency * t, signal.phase) + signal.offset;
   });
 }
 
 std::vector<double> generate(const TimeGrid& grid, const Triangle& signal) {
-  validate(grid);
-  require_finite(signal.amplitude, "triangle amplitude");
-  require_non_negative(signal.frequency, "triangle frequency");
-  require_finite(signal.phase, "triangle phase");
-  require_finite(signal.offset, "triangle offset");
+  validate_periodic(grid, signal, "triangle");
   const double phase_cycles = signal.phase / kTwoPi;
   return sample(grid, "triangle", [&](double t) {
     const double cycles = signal.frequency * t + phase_cycles;
@@ -99,12 +105,7 @@ std::vector<double> generate(const TimeGrid& grid, const Triangle& signal) {
 }
 
 std::vector<double> generate(const TimeGrid& grid, const DecayingSine& signal) {
-  validate(grid);
-  require_finite(signal.amplitude, "decaying sine amplitude");
-  require_non_negative(signal.frequency, "decaying sine frequency");
-  require_positive(signal.time_constant, "decaying sine time_constant");
-  require_finite(signal.phase, "decaying sine phase");
-  require_finite(signal.offset, "decaying sine offset");
+  validate_periodic(grid, signal, "decaying sine");
   return sample(grid, "decaying sine", [&](double t) {
     const double envelope = signal.amplitude * std::exp(-t / signal.time_constant);
     return envelope * sin_cycles(signal.frequency * t, signal.phase) + signal.offset;
@@ -112,12 +113,7 @@ std::vector<double> generate(const TimeGrid& grid, const DecayingSine& signal) {
 }
 
 std::vector<double> generate(const TimeGrid& grid, const GrowingSine& signal) {
-  validate(grid);
-  require_finite(signal.amplitude, "growing sine amplitude");
-  require_non_negative(signal.frequency, "growing sine frequency");
-  require_positive(signal.time_constant, "growing sine time_constant");
-  require_finite(signal.phase, "growing sine phase");
-  require_finite(signal.offset, "growing sine offset");
+  validate_periodic(grid, signal, "growing sine");
   return sample(grid, "growing sine", [&](double t) {
     const double envelope = -signal.amplitude * std::expm1(-t / signal.time_constant);
     return envelope * sin_cycles(signal.frequency * t, signal.phase) + signal.offset;
