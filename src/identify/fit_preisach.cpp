@@ -138,6 +138,26 @@ std::string termination_message(const NnlsResult& solution, const Eigen::VectorX
   return fmt::format("{}; {} of {} {} are 0", how, zero, weights.size(), unknowns);
 }
 
+// The report of a weight fit by NNLS: how it ended, the costs (the initial one: the best constant
+// output) and the fit errors.
+FitReport weight_fit_report(std::string model, std::string_view unknowns,
+                            std::string_view short_name, const WeightSolution& solution,
+                            double smoothness, bool fit_offset, std::span<const double> measured,
+                            std::span<const double> predicted) {
+  FitReport report;
+  report.model = std::move(model);
+  report.method = fmt::format("nnls (Lawson-Hanson) on {}", unknowns);
+  if (smoothness > 0.0) report.method += fmt::format(", smoothness {:.3g}", smoothness);
+  report.termination = solution.nnls.termination;
+  report.message = termination_message(solution.nnls, solution.weights, short_name);
+  report.iterations = solution.nnls.iterations;
+  report.parameters = static_cast<std::size_t>(solution.weights.size()) + (fit_offset ? 1 : 0);
+  report.initial_cost = best_constant_cost(measured, fit_offset);
+  report.final_cost = cost_of(measured, predicted);
+  report.fit = error_metrics(measured, predicted);
+  return report;
+}
+
 // ---------------------------------------------------------------------------------------------
 // (b) Regressors of the tabulated Everett function along a history.
 
@@ -295,18 +315,8 @@ PreisachWeightFit fit_preisach_weights(std::span<const double> input,
   auto state = result.model.initial_state();
   const auto predicted = simulate(result.model, state, fit_input);
   FitReport& report = result.report;
-  report.model = "preisach";
-  report.method = options.smoothness > 0.0
-                      ? fmt::format("nnls (Lawson-Hanson) on relay weights, smoothness {:.3g}",
-                                    options.smoothness)
-                      : "nnls (Lawson-Hanson) on relay weights";
-  report.termination = solution.nnls.termination;
-  report.message = termination_message(solution.nnls, solution.weights, "relay weights");
-  report.iterations = solution.nnls.iterations;
-  report.parameters = relays + (options.fit_offset ? 1 : 0);
-  report.initial_cost = best_constant_cost(fit_output, options.fit_offset);
-  report.final_cost = cost_of(fit_output, predicted);
-  report.fit = error_metrics(fit_output, predicted);
+  report = weight_fit_report("preisach", "relay weights", "relay weights", solution,
+                             options.smoothness, options.fit_offset, fit_output, predicted);
   if (split.has_validation()) {
     const auto validation_input = input.subspan(split.validation_begin, split.validation_size());
     const auto validation_output = output.subspan(split.validation_begin, split.validation_size());
@@ -423,20 +433,9 @@ PreisachForcFit fit_preisach_forcs(std::span<const ReversalCurve> curves,
     }
   }
   FitReport& report = result.report;
-  report.model = "tabulated_preisach";
-  report.method = options.smoothness > 0.0
-                      ? fmt::format(
-                            "nnls (Lawson-Hanson) on Everett cell weights from FORCs, "
-                            "smoothness {:.3g}",
-                            options.smoothness)
-                      : "nnls (Lawson-Hanson) on Everett cell weights from FORCs";
-  report.termination = solution.nnls.termination;
-  report.message = termination_message(solution.nnls, solution.weights, "cell weights");
-  report.iterations = solution.nnls.iterations;
-  report.parameters = cells + (options.fit_offset ? 1 : 0);
-  report.initial_cost = best_constant_cost(measured, options.fit_offset);
-  report.final_cost = cost_of(measured, predicted);
-  report.fit = error_metrics(measured, predicted);
+  report =
+      weight_fit_report("tabulated_preisach", "Everett cell weights from FORCs", "cell weights",
+                        solution, options.smoothness, options.fit_offset, measured, predicted);
   if (!held_measured.empty()) report.validation = error_metrics(held_measured, held_predicted);
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
