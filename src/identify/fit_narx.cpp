@@ -51,10 +51,10 @@ void validate_options(const NarxFitOptions& o) {
   }
   // Checked before the network is sized (the model checks its own parameters later).
   for (std::size_t l = 0; l < o.hidden_sizes.size(); ++l) {
-    if (o.hidden_sizes[l] < 1 || o.hidden_sizes[l] > 1000) {
-      throw Error(
-          fmt::format("NARX fit hidden_sizes[{}] = {} must be in 1..1000", l, o.hidden_sizes[l]),
-          fmt::format("hidden_sizes[{}]", l));
+    if (o.hidden_sizes[l] < 1 || o.hidden_sizes[l] > Narx::max_neurons) {
+      throw Error(fmt::format("NARX fit hidden_sizes[{}] = {} must be in 1..{}", l,
+                              o.hidden_sizes[l], Narx::max_neurons),
+                  fmt::format("hidden_sizes[{}]", l));
     }
   }
   if (o.play_thresholds.empty() && o.plays > 100) {

@@ -14,7 +14,6 @@ namespace hyst {
 namespace {
 
 constexpr std::size_t kMaxLags = 1000;
-constexpr std::size_t kMaxNeurons = 1000;
 
 std::string sizes_text(std::span<const std::size_t> sizes) {
   return fmt::format("[{}]", fmt::join(sizes, ", "));
@@ -48,9 +47,9 @@ void validate(const Narx::Params& p) {
                 "hidden_sizes");
   }
   for (std::size_t l = 0; l < p.hidden_sizes.size(); ++l) {
-    if (p.hidden_sizes[l] < 1 || p.hidden_sizes[l] > kMaxNeurons) {
+    if (p.hidden_sizes[l] < 1 || p.hidden_sizes[l] > Narx::max_neurons) {
       throw Error(fmt::format("NARX hidden_sizes[{}] = {} must be in 1..{}", l, p.hidden_sizes[l],
-                              kMaxNeurons),
+                              Narx::max_neurons),
                   fmt::format("hidden_sizes[{}]", l));
     }
   }

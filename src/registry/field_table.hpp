@@ -240,8 +240,13 @@ class FieldTable {
     }
     return json;
   }
-  // The documented fields in table order, with the struct's defaults of the optional ones.
-  const std::vector<ParameterInfo>& schema() const { return schema_; }
+  // The documented fields in table order, with the defaults of the optional ones.
+  std::vector<ParameterInfo> schema() const {
+    std::vector<ParameterInfo> schema;
+    for (const auto& field : fields_)
+      schema.push_back(field.info);
+    return schema;
+  }
 
  private:
   template <class>
@@ -295,14 +300,12 @@ class FieldTable {
   }
 
   void add_field(ParameterInfo info, Presence presence, Reader read, Writer write) {
-    schema_.push_back(info);
     fields_.push_back({std::move(info), presence, std::move(read), std::move(write), {}, {}});
   }
 
   Presence default_presence_;
   S defaults_;
   std::vector<Field> fields_;
-  std::vector<ParameterInfo> schema_;
 };
 
 // The options of the shared multistart engine (src/identify/detail/multistart_fit.hpp) that the

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "../core/detail/enum_names.hpp"
 #include "hyst/identify/fit_jiles_atherton.hpp"
 #include "hyst/models/jiles_atherton.hpp"
 #include "model_entries.hpp"
@@ -72,6 +73,9 @@ struct JilesAthertonCodec {
 
 // The entry's default differs from the C++ options': a record given to `hyst fit` starts
 // demagnetised unless the user says it is one loop in steady state.
+// The fit option initial_state, in the words of the other fitters: periodic or not.
+constexpr EnumNames<bool, 2> kJaStartNames{{{false, "demagnetised"}, {true, "periodic"}}};
+
 JilesAthertonFitOptions demagnetised_start() {
   JilesAthertonFitOptions options;
   options.periodic = false;
@@ -91,17 +95,12 @@ const FieldTable<JilesAthertonFitOptions>& jiles_atherton_fit_option_table() {
                "demagnetised"},
               Presence::optional,
               [](JsonFields& fields, O& options) {
-                const auto text = fields.string("initial_state");
-                if (text != "demagnetised" && text != "periodic") {
-                  throw Error(
-                      fmt::format("{}: unknown initial state '{}' (expected "
-                                  "demagnetised or periodic)",
-                                  fields.path_of("initial_state"), text));
-                }
-                options.periodic = text == "periodic";
+                options.periodic = fields.parsed("initial_state", [](std::string_view text) {
+                  return value_named(text, kJaStartNames, "initial state");
+                });
               },
               [](const O& options, nlohmann::json& json) {
-                json["initial_state"] = options.periodic ? "periodic" : "demagnetised";
+                json["initial_state"] = name_of(options.periodic, kJaStartNames);
               })
           .add("periodic", &O::periodic, "",
                "the same as initial_state = periodic (true) or demagnetised (false)")

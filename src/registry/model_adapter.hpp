@@ -5,11 +5,9 @@
 //   struct Codec {
 //     using Model = ...;
 //     static constexpr std::string_view name = "...";
-//     // Either the table of Model::Params (field_table.hpp), from which the model file's
-//     // "params" and the entry's schema are derived, or, for parameters a table cannot describe
-//     // (fields that depend on others), the conversion itself:
+//     // The table of Model::Params (field_table.hpp): the model file's "params" (read and
+//     // written) and the entry's schema are derived from it.
 //     static const FieldTable<typename Model::Params>& parameter_table();
-//     static nlohmann::json params_to_json(const Model&);
 //     static nlohmann::json state_to_json(const Model&, const typename Model::State&);
 //     static typename Model::State state_from_json(const Model&, detail::JsonFields&);
 //     static std::size_t parameter_count(const Model&);
@@ -54,13 +52,7 @@ class ModelAdapter final : public DynamicModel {
   std::unique_ptr<DynamicModel> clone() const override {
     return std::make_unique<ModelAdapter>(*this);
   }
-  nlohmann::json params() const override {
-    if constexpr (requires { Codec::parameter_table(); }) {
-      return Codec::parameter_table().write(model_.params());
-    } else {
-      return Codec::params_to_json(model_);
-    }
-  }
+  nlohmann::json params() const override { return Codec::parameter_table().write(model_.params()); }
   nlohmann::json state() const override { return Codec::state_to_json(model_, state_); }
   void set_state(const nlohmann::json& state) override {
     JsonFields fields(state, "state");
@@ -169,17 +161,10 @@ std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params p
 }
 
 // The parameters of a model file's "params" object (or of another object at `path`) through the
-// codec's parameter table or params_from_json: every field read, none left over.
+// codec's parameter table: every field read, none left over.
 template <class Codec>
 typename Codec::Model::Params params_of_json(const nlohmann::json& params_json, std::string path) {
-  if constexpr (requires { Codec::parameter_table(); }) {
-    return Codec::parameter_table().read(params_json, std::move(path));
-  } else {
-    JsonFields fields(params_json, std::move(path));
-    auto params = Codec::params_from_json(fields);
-    fields.finish();
-    return params;
-  }
+  return Codec::parameter_table().read(params_json, std::move(path));
 }
 
 // The model of a model file's "params" (and "state", may be null): an entry's `create`.

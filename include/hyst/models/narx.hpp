@@ -35,6 +35,9 @@ namespace hyst {
 
 class Narx {
  public:
+  //! The most neurons a hidden layer may have.
+  static constexpr std::size_t max_neurons = 1000;
+
   struct Params {
     std::size_t input_lags = 2;             //!< n_u: v[k-1..k-n_u] (v[k] is always used)
     std::size_t output_lags = 2;            //!< n_y >= 0: y[k-1..k-n_y]
