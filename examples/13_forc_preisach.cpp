@@ -163,7 +163,8 @@ int main(int argc, char** argv) try {
 
   // Measured (drift-corrected, as fitted) against predicted for four held-out curves spread
   // over the reversal fields; each prediction runs from positive saturation.
-  const auto curves = hyst::reversal_curves(hyst::io::correct_drift(file, request.drift));
+  const auto corrected = hyst::io::correct_drift(file, request.drift);
+  const auto curves = hyst::reversal_curves(corrected);  // views of `corrected`
   hyst::plot::Figure curves_figure{.title = "Held-out FORCs: measured and predicted",
                                    .x_label = "mu0 H [mT]",
                                    .y_label = "moment [nA m^2]"};

@@ -15,9 +15,15 @@
 namespace hyst::python {
 namespace {
 
-//! (input, output) pairs, or objects with field and moment, as reversal curves.
-std::vector<ReversalCurve> curves_from_python(const py::sequence& sequence) {
-  std::vector<ReversalCurve> curves;
+//! A curve's samples as given from Python, copied.
+struct PythonCurve {
+  std::vector<double> input;
+  std::vector<double> output;
+};
+
+//! (input, output) pairs of arrays as curves.
+std::vector<PythonCurve> curves_from_python(const py::sequence& sequence) {
+  std::vector<PythonCurve> curves;
   for (std::size_t n = 0; n < sequence.size(); ++n) {
     const py::object item = sequence[n];
     const auto name = fmt::format("curves[{}]", n);
@@ -71,7 +77,8 @@ void bind_forc(py::module_& module) {
                 "curves must be a hyst.io.MicromagForcFile or a sequence of (input, output) "
                 "pairs");
           }
-          const auto reversal = curves_from_python(curves.cast<py::sequence>());
+          const auto owned = curves_from_python(curves.cast<py::sequence>());
+          const auto reversal = fit_records_of(owned);
           auto fit_options = forc_fit_options_from_json(options_json);
           fit_options.held_out =
               held_out ? *held_out : every_nth_curve(reversal.size(), hold_out_every);

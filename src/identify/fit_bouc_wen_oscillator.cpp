@@ -72,24 +72,6 @@ class SimulationError {
   std::size_t residuals_ = 0;
 };
 
-void check_record(const BoucWenOscillatorRecord& record, std::size_t index) {
-  const std::string name = fmt::format("records[{}]", index);
-  if (record.oversampling < 1) {
-    throw Error(fmt::format("{}: oversampling must be >= 1", name), "oversampling");
-  }
-  require_not_empty(record.output.size(), name + ".output");
-  require_same_size(record.input.size(), name + ".input",
-                    record.output.size() * record.oversampling,
-                    fmt::format("{}.output x oversampling {}", name, record.oversampling));
-  require_finite(record.input, name + ".input");
-  require_finite(record.output, name + ".output");
-  if (record.skip + 2 > record.output.size()) {
-    throw Error(fmt::format("{}: skip = {} leaves fewer than 2 of {} output samples", name,
-                            record.skip, record.output.size()),
-                "skip");
-  }
-}
-
 }  // namespace
 
 std::vector<double> simulate_bouc_wen_oscillator(const BoucWenOscillator& model,
@@ -160,8 +142,10 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
                                              const BoucWenOscillatorFitOptions& options) {
   const auto clock_start = std::chrono::steady_clock::now();
   if (records.empty()) throw Error("Bouc-Wen oscillator fit: no record", "records");
-  for (std::size_t i = 0; i < records.size(); ++i)
-    check_record(records[i], i);
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    check_fit_record(records[i], fmt::format("records[{}]", i),
+                     {.min_samples = 2, .oversampling = true, .skip = true});
+  }
   if (!(options.sample_time > 0.0)) {
     throw Error(fmt::format("sample_time = {} must be > 0", options.sample_time), "sample_time");
   }

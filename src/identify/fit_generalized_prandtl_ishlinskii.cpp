@@ -46,20 +46,13 @@ void require_varying(std::span<const double> samples, std::string_view name, std
   }
 }
 
-void validate_record(const GpiRecord& record, const std::string& name) {
-  const auto input_name = fmt::format("GPI fit {}input", name);
-  const auto output_name = fmt::format("GPI fit {}output", name);
-  require_same_size(record.input.size(), input_name, record.output.size(), output_name);
-  require_not_empty(record.input.size(), input_name);
-  require_finite(record.input, input_name);
-  require_finite(record.output, output_name);
-}
-
-// Message prefix of a record: "" or "validation " for a single record, "record 2 " or
-// "validation record 2 " when there are several.
-std::string record_name(std::string_view kind, std::size_t index, std::size_t count) {
-  if (count == 1) return std::string(kind);
-  return fmt::format("{}record {} ", kind, index);
+// A record in messages: "GPI fit" or "GPI fit validation" for a single record, "GPI fit record 2"
+// or "GPI fit validation record 2" when there are several.
+std::string gpi_record_name(std::string_view kind, std::size_t index, std::size_t count) {
+  std::string name = "GPI fit";
+  if (!kind.empty()) name += fmt::format(" {}", kind);
+  if (count > 1) name += fmt::format(" record {}", index);
+  return name;
 }
 
 // " (record 2)" when there are several records, "" otherwise.
@@ -186,9 +179,9 @@ void check_gpi_records(std::span<const GpiRecord> records, std::span<const GpiRe
                        const GpiFitOptions& options) {
   if (records.empty()) throw Error("GPI fit: no record to fit");
   for (std::size_t r = 0; r < records.size(); ++r)
-    validate_record(records[r], record_name("", r, records.size()));
+    check_fit_record(records[r], gpi_record_name("", r, records.size()), {});
   for (std::size_t r = 0; r < held_out.size(); ++r)
-    validate_record(held_out[r], record_name("validation ", r, held_out.size()));
+    check_fit_record(held_out[r], gpi_record_name("validation", r, held_out.size()), {});
   if (options.validate_fraction != 0.0 && (records.size() > 1 || !held_out.empty())) {
     throw Error(fmt::format("GPI fit validate_fraction = {} must be 0 when separate validation "
                             "records are given or several records are fitted",
@@ -543,7 +536,7 @@ std::array<GpiParameterVector, 2> default_gpi_bounds(double input_min, double in
 
 std::vector<GpiParameterVector> gpi_starting_points(std::span<const double> input,
                                                     std::span<const double> output, std::size_t m) {
-  validate_record({input, output}, "");
+  check_fit_record({input, output}, "GPI fit", {});
   require_varying(input, "input", "the envelopes need a varying input");
   require_varying(output, "output", "there is no hysteresis to fit");
   if (m < 1) throw Error("GPI fit m = 0 must be >= 1", "m");

@@ -233,14 +233,8 @@ std::vector<double> everett_values(std::size_t k, const Eigen::VectorXd& w) {
 
 void validate_curves(std::span<const ReversalCurve> curves) {
   if (curves.empty()) throw Error("FORC fit: no curves");
-  for (std::size_t n = 0; n < curves.size(); ++n) {
-    const auto& curve = curves[n];
-    if (curve.input.empty()) throw Error(fmt::format("FORC {} has no samples", n));
-    require_same_size(curve.input.size(), fmt::format("FORC {} input", n), curve.output.size(),
-                      fmt::format("FORC {} output", n));
-    require_finite(curve.input, fmt::format("FORC {} input", n));
-    require_finite(curve.output, fmt::format("FORC {} output", n));
-  }
+  for (std::size_t n = 0; n < curves.size(); ++n)
+    check_fit_record(curves[n], fmt::format("FORC {}", n), {});
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ std::vector<ReversalCurve> reversal_curves(const io::MicromagForcFile& file) {
   std::vector<ReversalCurve> curves;
   curves.reserve(file.curves.size());
   for (const auto& curve : file.curves)
-    curves.push_back({curve.field, curve.moment});
+    curves.push_back({.input = curve.field, .output = curve.moment});
   return curves;
 }
 

@@ -18,6 +18,12 @@
 namespace hyst {
 namespace {
 
+// A reversal curve with its own samples (ReversalCurve views them).
+struct OwnedCurve {
+  std::vector<double> input;
+  std::vector<double> output;
+};
+
 // A smooth weight map: a bump at (alpha, beta) = (0.3, -0.3) on a floor, plus the diagonal.
 std::vector<double> bump_weights(std::size_t levels) {
   const auto c = preisach_thresholds(levels, -1.0, 1.0, PreisachGridLayout::cell_centred);
@@ -126,9 +132,9 @@ TEST(FitPreisach, RecoversAKnownEverettTableFromItsForcs) {
   }
   const TabulatedPreisach truth({.everett = table, .offset = -0.2});
   // One curve per reversal level, sampled on a finer grid than the table.
-  std::vector<ReversalCurve> curves;
+  std::vector<OwnedCurve> curves;
   for (int r = 0; r < 40; ++r) {
-    ReversalCurve curve;
+    OwnedCurve curve;
     for (double v = 1.0 - 0.05 * r; v <= 1.0 + 1e-12; v += 0.05)
       curve.input.push_back(v);
     curve.output =
@@ -136,7 +142,7 @@ TEST(FitPreisach, RecoversAKnownEverettTableFromItsForcs) {
     curves.push_back(curve);
   }
   const auto fit = fit_preisach_forcs(
-      curves, {.intervals = k, .lower = -1, .upper = 1, .held_out = {3, 17, 29}});
+      fit_records_of(curves), {.intervals = k, .lower = -1, .upper = 1, .held_out = {3, 17, 29}});
   EXPECT_EQ(fit.report.termination, Termination::converged) << fit.report.full();
   double worst = 0;
   for (std::size_t n = 0; n < table.values.size(); ++n)
@@ -158,9 +164,9 @@ TEST(FitPreisach, ApproximatesAGaussianModelFromItsForcs) {
                                             .alpha_width = 0.2,
                                             .beta_centre = -0.2,
                                             .beta_width = 0.25}});
-  std::vector<ReversalCurve> curves;
+  std::vector<OwnedCurve> curves;
   for (int r = 0; r <= 80; ++r) {
-    ReversalCurve curve;
+    OwnedCurve curve;
     for (double v = -1.0 + 0.025 * r; v <= 1.0 + 1e-12; v += 0.025)
       curve.input.push_back(v);
     curve.output =
@@ -170,7 +176,8 @@ TEST(FitPreisach, ApproximatesAGaussianModelFromItsForcs) {
   std::vector<std::size_t> held_out;
   for (std::size_t n = 2; n < curves.size(); n += 4)
     held_out.push_back(n);
-  const auto fit = fit_preisach_forcs(curves, {.intervals = 20, .held_out = held_out});
+  const auto fit =
+      fit_preisach_forcs(fit_records_of(curves), {.intervals = 20, .held_out = held_out});
   ASSERT_TRUE(fit.report.validation.has_value());
   EXPECT_LT(fit.report.fit.nrmse_percent, 0.2);
   EXPECT_LT(fit.report.validation->nrmse_percent, 0.2);
@@ -205,28 +212,32 @@ TEST(FitPreisach, RejectsBadData) {
   EXPECT_HYST_ERROR(fit_preisach_weights(ramp, ramp, {.levels = 1, .validate_fraction = 1.5}),
                     "Preisach fit: ");
 
-  std::vector<ReversalCurve> curves{{{0.0, 0.5, 1.0}, {0.0, 1.0, 2.0}}, {{0.5, 1.0}, {1.0, 2.0}}};
+  std::vector<OwnedCurve> curves{{{0.0, 0.5, 1.0}, {0.0, 1.0, 2.0}}, {{0.5, 1.0}, {1.0, 2.0}}};
   EXPECT_HYST_ERROR(fit_preisach_forcs({}), "FORC fit: no curves");
   auto bad = curves;
   bad[1].output[1] = NAN;
-  EXPECT_HYST_ERROR(fit_preisach_forcs(bad), "FORC 1 output[1] = nan is not finite");
+  EXPECT_HYST_ERROR(fit_preisach_forcs(fit_records_of(bad)),
+                    "FORC 1 output[1] = nan is not finite");
   bad = curves;
   bad[0].output.pop_back();
-  EXPECT_HYST_ERROR(fit_preisach_forcs(bad), "FORC 0 input has 3 values but FORC 0 output has 2");
-  EXPECT_HYST_ERROR(fit_preisach_forcs(curves, {.intervals = 0}),
+  EXPECT_HYST_ERROR(fit_preisach_forcs(fit_records_of(bad)),
+                    "FORC 0 input has 3 values but FORC 0 output has 2");
+  EXPECT_HYST_ERROR(fit_preisach_forcs(fit_records_of(curves), {.intervals = 0}),
                     "FORC fit intervals = 0 must be >= 1");
-  EXPECT_HYST_ERROR(fit_preisach_forcs(curves, {.intervals = 1, .held_out = {2}}),
+  EXPECT_HYST_ERROR(fit_preisach_forcs(fit_records_of(curves), {.intervals = 1, .held_out = {2}}),
                     "FORC fit held_out index 2 is out of range (2 curves)");
-  EXPECT_HYST_ERROR(fit_preisach_forcs(curves, {.intervals = 1, .held_out = {0, 1}}),
-                    "every curve is held out");
-  EXPECT_HYST_ERROR(fit_preisach_forcs(curves, {.intervals = 4}),
+  EXPECT_HYST_ERROR(
+      fit_preisach_forcs(fit_records_of(curves), {.intervals = 1, .held_out = {0, 1}}),
+      "every curve is held out");
+  EXPECT_HYST_ERROR(fit_preisach_forcs(fit_records_of(curves), {.intervals = 4}),
                     "the fitted curves have 5 points, fewer than cells + 2 = 12 (K = 4 intervals)");
   EXPECT_HYST_ERROR(
-      fit_preisach_forcs(curves,
+      fit_preisach_forcs(fit_records_of(curves),
                          {.intervals = 1, .saturation = PreisachInitialState::demagnetised}),
       "FORC fit saturation = demagnetised must be positive_saturation or negative_saturation");
-  EXPECT_HYST_ERROR(fit_preisach_forcs(curves, {.intervals = 1, .lower = 2.0, .upper = 1.0}),
-                    "FORC fit: the input range [2, 1] is empty");
+  EXPECT_HYST_ERROR(
+      fit_preisach_forcs(fit_records_of(curves), {.intervals = 1, .lower = 2.0, .upper = 1.0}),
+      "FORC fit: the input range [2, 1] is empty");
 }
 
 // E is linear in the table: the stencil reproduces the interpolation.

@@ -39,12 +39,18 @@ const char* const kForcDataFile =
     HYST_SHARED_DATA_DIR "/pmagpy_forc_micromag_agm/conventional_example.forc";
 constexpr double kNano = 1e9;  // A m^2 -> nA m^2
 
-std::vector<ReversalCurve> load_curves() {
+// The curves with their own samples (ReversalCurve views them), moments in nA m^2.
+struct MeasuredCurve {
+  std::vector<double> input;
+  std::vector<double> output;
+};
+
+std::vector<MeasuredCurve> load_curves() {
   const auto file = io::correct_drift(io::read_micromag_forc(kForcDataFile),
                                       io::ForcDriftCorrection::multiplicative);
-  std::vector<ReversalCurve> curves;
+  std::vector<MeasuredCurve> curves;
   for (const auto& c : file.curves) {
-    ReversalCurve curve{c.field, c.moment};
+    MeasuredCurve curve{c.field, c.moment};
     for (double& m : curve.output)
       m *= kNano;
     curves.push_back(std::move(curve));
@@ -68,7 +74,7 @@ TEST(FitPreisachForcData, PredictsHeldOutForcsAndTheMajorLoop) {
   const double lowest = curves.back().input.front();
   const PreisachForcFitOptions options{
       .intervals = 32, .lower = lowest, .upper = 0.3, .held_out = held_out};
-  const auto fit = fit_preisach_forcs(curves, options);
+  const auto fit = fit_preisach_forcs(fit_records_of(curves), options);
   ASSERT_TRUE(fit.report.validation.has_value());
   EXPECT_EQ(fit.report.termination, Termination::converged) << fit.report.full();
 
@@ -102,7 +108,7 @@ TEST(FitPreisachForcData, PredictsHeldOutForcsAndTheMajorLoop) {
     block.push_back(n);
   auto block_options = options;
   block_options.held_out = block;
-  const auto block_fit = fit_preisach_forcs(curves, block_options);
+  const auto block_fit = fit_preisach_forcs(fit_records_of(curves), block_options);
   ASSERT_TRUE(block_fit.report.validation.has_value());
 
   // Figures of docs/results.md (bounds ~1.5x the values measured on 2026-11-22).

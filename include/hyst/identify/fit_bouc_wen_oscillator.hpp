@@ -28,18 +28,15 @@
 #include <span>
 #include <vector>
 
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/bouc_wen_oscillator.hpp"
 
 namespace hyst {
 
-//! One force/displacement record.
-struct BoucWenOscillatorRecord {
-  std::span<const double> input;   //!< u [N], oversampling * N samples
-  std::span<const double> output;  //!< y [m], N samples; y[k] belongs to u[k * oversampling]
-  std::size_t oversampling = 1;    //!< input samples per output sample (>= 1)
-  std::size_t skip = 0;            //!< leading output samples not compared (transient), < N
-};
+//! One force/displacement record: input u [N], output y [m]; oversampling and skip as the fit
+//! needs them (a periodic record in steady state fitted from rest with its first periods skipped).
+using BoucWenOscillatorRecord = FitRecord;
 
 struct BoucWenOscillatorFitOptions {
   double sample_time = 1.0 / 750.0;  //!< of the output samples [s] > 0

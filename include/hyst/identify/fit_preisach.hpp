@@ -50,6 +50,7 @@
 #include <span>
 #include <vector>
 
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/preisach.hpp"
 
@@ -86,12 +87,10 @@ PreisachWeightFit fit_preisach_weights(std::span<const double> input,
                                        std::span<const double> output,
                                        const PreisachWeightFitOptions& options = {});
 
-//! One first-order reversal curve: input[0] is the reversal input v_r, reached from saturation;
-//! the curve then follows input[1...] (usually monotonically away from v_r).
-struct ReversalCurve {
-  std::vector<double> input;   //!< [input units], >= 1 sample
-  std::vector<double> output;  //!< [output units], same length
-};
+//! One first-order reversal curve, viewed: input[0] is the reversal input v_r, reached from
+//! saturation; the curve then follows input[1...] (usually monotonically away from v_r). At least
+//! 1 sample, output of the same length; oversampling 1 and skip 0.
+using ReversalCurve = FitRecord;
 
 //! Options of fit_preisach_forcs().
 struct PreisachForcFitOptions {

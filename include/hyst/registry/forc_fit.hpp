@@ -55,7 +55,8 @@ PreisachForcFitOptions forc_fit_options_from_json(const nlohmann::json& options)
 //! n = 0: none.
 std::vector<std::size_t> every_nth_curve(std::size_t curves, std::size_t n);
 
-//! One reversal curve per FORC of the file: input = field, output = moment.
+//! One reversal curve per FORC of the file: input = field, output = moment, viewed (the file
+//! must outlive them).
 std::vector<ReversalCurve> reversal_curves(const io::MicromagForcFile& file);
 
 //! fit_preisach_forcs() with the model wrapped as a registered model.
