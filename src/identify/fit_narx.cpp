@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
+#include "detail/multistart_driver.hpp"
 #include "detail/multistart_fit.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
@@ -34,11 +35,18 @@ double deviation_of(std::span<const double> x, double mean) {
   return std::sqrt(sum / static_cast<double>(x.size()));
 }
 
+// Each start is a whole training run: a bound on what one fit can cost.
+constexpr std::size_t kMaxStarts = 100;
+
 void validate_options(const NarxFitOptions& o) {
   if (o.max_iterations < 1) {
     throw Error("NARX fit max_iterations = 0 must be >= 1", "max_iterations");
   }
   if (o.patience < 1) throw Error("NARX fit patience = 0 must be >= 1", "patience");
+  if (o.starts < 1 || o.starts > kMaxStarts) {
+    throw Error(fmt::format("NARX fit starts = {} must be in 1..{}", o.starts, kMaxStarts),
+                "starts");
+  }
   if (!(o.early_stopping_fraction >= 0.0 && o.early_stopping_fraction <= 0.9)) {
     throw Error(fmt::format("NARX fit early_stopping_fraction = {} must be in [0, 0.9]",
                             o.early_stopping_fraction),
@@ -574,6 +582,131 @@ bool add_free_run_errors(NarxFit& result, std::span<const double> input,
   return true;
 }
 
+// What every training run of one fit shares: the structure, the training rows and the
+// early-stopping monitor part (empty: no early stopping).
+struct Training {
+  const Narx::Params& shape;
+  std::size_t regressors;
+  const Rows& rows;
+  const NarxFitOptions& options;
+  Narx::State monitor_start;
+  std::span<const double> monitor_input;
+  std::span<const double> monitor_output;
+};
+
+// One training run from the initial weights of one seed (a start of the multistart engine,
+// multistart_driver.hpp): the one-step stage, then the simulation-error stage, each with early
+// stopping on the monitor part.
+struct NarxRun {
+  std::vector<double> weights;
+  double initial_cost = 0.0;  // one-step cost of the initial weights
+  ceres::Solver::Summary one_step;
+  ceres::Solver::Summary simulation;
+  bool simulation_stage = false;
+  bool monitored = false;
+  bool early_stopped = false;
+  double monitor_error = std::numeric_limits<double>::infinity();
+  std::size_t best_iteration = 0;
+  std::size_t best_stage = 1;
+  // The engine's ranking: the free-run error on the monitor part when there is one, else the
+  // final cost of the last stage; every run is usable (a diverging model is reported later).
+  double cost = 0.0;
+  bool usable = true;
+  bool finished = true;
+  std::size_t iterations = 0;
+};
+
+NarxRun train(const Training& t, std::uint64_t seed, std::size_t max_iterations) {
+  NarxRun run;
+  std::vector<double> weights = t.shape.weights;
+  initial_weights(t.rows, t.shape, seed, weights);
+  ceres::Problem problem;
+  for (std::size_t begin = 0; begin < t.rows.count(); begin += kRowsPerBlock) {
+    const std::size_t end = std::min(t.rows.count(), begin + kRowsPerBlock);
+    problem.AddResidualBlock(
+        new BlockResiduals(t.rows, begin, end, weights.size(), t.shape.hidden_sizes), nullptr,
+        weights.data());
+  }
+  add_ridge(problem, t.shape, t.regressors, t.rows, t.options, weights);
+  run.initial_cost = one_step_cost(t.rows, t.shape, weights);
+
+  auto solver = detail::levenberg_marquardt_options(max_iterations, detail::kFunctionTolerance);
+  std::optional<EarlyStopping> stopping;
+  if (!t.monitor_input.empty()) {
+    stopping.emplace(t.shape, weights, t.monitor_start, t.monitor_input, t.monitor_output,
+                     t.options.patience);
+    solver.update_state_every_iteration = true;
+    solver.callbacks.push_back(&*stopping);
+  }
+  detail::StagnationStop one_step_stagnation;
+  solver.callbacks.push_back(&one_step_stagnation);
+  ceres::Solve(solver, &problem, &run.one_step);
+  if (one_step_stagnation.stopped()) run.one_step.message = one_step_stagnation.message();
+  if (stopping && !stopping->best().empty()) weights = stopping->best();
+
+  run.simulation_stage = t.options.simulation_iterations > 0 && t.shape.output_lags > 0;
+  if (run.simulation_stage) {
+    run.simulation = simulation_error_stage(t.rows, t.shape, t.regressors, t.options, solver,
+                                            stopping ? &*stopping : nullptr, weights);
+  }
+  const auto& last = run.simulation_stage ? run.simulation : run.one_step;
+  run.cost = last.final_cost;
+  if (stopping) {
+    run.monitored = true;
+    run.early_stopped = stopping->stopped();
+    run.monitor_error = stopping->best_error();
+    run.best_iteration = stopping->best_iteration();
+    run.best_stage = stopping->best_stage();
+    run.cost = run.monitor_error;
+  }
+  if (!(run.cost < std::numeric_limits<double>::infinity())) {
+    run.cost = std::numeric_limits<double>::max();
+  }
+  run.iterations = (run.one_step.iterations.empty() ? 0 : run.one_step.iterations.size() - 1) +
+                   (run.simulation_stage && !run.simulation.iterations.empty()
+                        ? run.simulation.iterations.size() - 1
+                        : 0);
+  run.weights = std::move(weights);
+  return run;
+}
+
+// The report of the kept run: method, how it ended, costs and its message.
+void report_run(NarxFit& result, const NarxRun& run, const Rows& rows, const Narx::Params& shape,
+                const NarxFitOptions& options) {
+  auto& report = result.report;
+  report.model = "narx";
+  report.method =
+      "levenberg-marquardt (ceres): one-step-ahead prediction error (backpropagated Jacobian)" +
+      std::string(run.simulation_stage ? ", then simulation error (forward sensitivities)" : "") +
+      std::string(run.monitored ? ", early stopping on the free-run error" : "") +
+      (options.starts > 1 ? fmt::format("; the best of {} initialisations", options.starts) : "");
+  const ceres::Solver::Summary& last = run.simulation_stage ? run.simulation : run.one_step;
+  // Early stopping that ended the last stage is the method's own stopping rule: converged.
+  report.termination =
+      run.early_stopped ? Termination::converged : detail::termination_of_ceres(last);
+  report.initial_cost = run.initial_cost;
+  report.final_cost = one_step_cost(rows, shape, run.weights);
+  report.parameters = run.weights.size();
+  result.best_iteration = run.best_iteration;
+  result.best_stage = run.best_stage;
+  const std::string stopping_text =
+      run.monitored
+          ? fmt::format("; kept {} iteration {} (free-run RMSE {:.4g} on the early-stopping part)",
+                        run.best_stage == 2 ? "simulation-error" : "one-step", run.best_iteration,
+                        run.monitor_error)
+          : "";
+  report.message = fmt::format(
+      "{}{}; one-step-ahead RMSE {:.4g} (fit){}",
+      run.early_stopped ? fmt::format("free-run error on the early-stopping part not improved "
+                                      "for {} iterations",
+                                      options.patience)
+                        : last.message,
+      stopping_text, result.one_step_fit.rmse,
+      result.one_step_validation
+          ? fmt::format(", {:.4g} (validation)", result.one_step_validation->rmse)
+          : "");
+}
+
 NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
                   std::span<const double> validation_input,
                   std::span<const double> validation_output, bool continue_into_validation,
@@ -581,7 +714,6 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   const auto started = std::chrono::steady_clock::now();
   auto shape = structure(input, output, options);
   const Narx shape_model(shape);  // validates the structure
-  const std::size_t regressors = shape_model.regressor_count();
   const std::size_t weight_count = shape.weights.size();
   const std::size_t warmup = std::max(shape.input_lags, shape.output_lags);
 
@@ -599,97 +731,34 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   }
   const Rows rows =
       one_step_rows(shape_model, input.first(train_end), output.first(train_end), warmup);
-  std::vector<double> weights = shape.weights;
-  initial_weights(rows, shape, options.seed, weights);
-
-  ceres::Problem::Options problem_options;
-  ceres::Problem problem(problem_options);
-  for (std::size_t begin = 0; begin < rows.count(); begin += kRowsPerBlock) {
-    const std::size_t end = std::min(rows.count(), begin + kRowsPerBlock);
-    problem.AddResidualBlock(new BlockResiduals(rows, begin, end, weight_count, shape.hidden_sizes),
-                             nullptr, weights.data());
-  }
-  add_ridge(problem, shape, regressors, rows, options, weights);
-  const double initial_cost = one_step_cost(rows, shape, weights);
-
-  auto solver =
-      detail::levenberg_marquardt_options(options.max_iterations, detail::kFunctionTolerance);
-  std::optional<EarlyStopping> stopping;
+  Training training{shape, shape_model.regressor_count(), rows, options, {}, {}, {}};
   if (monitor > 0) {
-    stopping.emplace(shape, weights,
-                     shape_model.state_after(input.first(train_end), output.first(train_end)),
-                     input.subspan(train_end), output.subspan(train_end), options.patience);
-    solver.update_state_every_iteration = true;
-    solver.callbacks.push_back(&*stopping);
+    training.monitor_start =
+        shape_model.state_after(input.first(train_end), output.first(train_end));
+    training.monitor_input = input.subspan(train_end);
+    training.monitor_output = output.subspan(train_end);
   }
-  detail::StagnationStop one_step_stagnation;
-  solver.callbacks.push_back(&one_step_stagnation);
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver, &problem, &summary);
-  if (one_step_stagnation.stopped()) summary.message = one_step_stagnation.message();
+  const auto runs = detail::run_multistart(
+      options.starts, {.screen = false, .max_iterations = options.max_iterations},
+      [&](std::size_t s, std::size_t iterations) {
+        return train(training, options.seed + s, iterations);
+      },
+      [](const NarxRun& run, std::size_t) { return run; });
+  const NarxRun& best = runs.best;
 
+  shape.weights = best.weights;
   NarxFit result{Narx(shape), {}, {}, {}, {}, 0, 1};
-  std::string stopping_text;
-  if (stopping && !stopping->best().empty()) {
-    weights = stopping->best();
-    result.best_iteration = stopping->best_iteration();
-  }
-
-  // Stage 2: the simulation (free-run) error itself, from the stage-1 weights.
-  ceres::Solver::Summary simulation_summary;
-  const bool simulation_stage = options.simulation_iterations > 0 && shape.output_lags > 0;
-  if (simulation_stage) {
-    simulation_summary = simulation_error_stage(rows, shape, regressors, options, solver,
-                                                stopping ? &*stopping : nullptr, weights);
-  }
-  if (stopping) {
-    result.best_iteration = stopping->best_iteration();
-    result.best_stage = stopping->best_stage();
-    stopping_text =
-        fmt::format("; kept {} iteration {} (free-run RMSE {:.4g} on the early-stopping part)",
-                    stopping->best_stage() == 2 ? "simulation-error" : "one-step",
-                    stopping->best_iteration(), stopping->best_error());
-  }
-  shape.weights = weights;
-  result.model = Narx(shape);
   result.initial_state = result.model.state_at_rest(input.front(), output.front());
-
-  auto& report = result.report;
-  report.model = "narx";
-  report.method =
-      "levenberg-marquardt (ceres): one-step-ahead prediction error (backpropagated Jacobian)" +
-      std::string(simulation_stage ? ", then simulation error (forward sensitivities)" : "") +
-      std::string(monitor > 0 ? ", early stopping on the free-run error" : "");
-  const ceres::Solver::Summary& last = simulation_stage ? simulation_summary : summary;
-  // Early stopping that ended the last stage is the method's own stopping rule: converged.
-  report.termination =
-      stopping && stopping->stopped() ? Termination::converged : detail::termination_of_ceres(last);
-  report.iterations = (summary.iterations.empty() ? 0 : summary.iterations.size() - 1) +
-                      (simulation_stage && !simulation_summary.iterations.empty()
-                           ? simulation_summary.iterations.size() - 1
-                           : 0);
-  report.initial_cost = initial_cost;
-  report.final_cost = one_step_cost(rows, shape, weights);
-  report.parameters = weight_count;
-
-  if (!add_free_run_errors(result, input, output, validation_input, validation_output,
-                           continue_into_validation)) {
-    report.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return result;
+  result.report.iterations = runs.iterations;
+  const bool finite = add_free_run_errors(result, input, output, validation_input,
+                                          validation_output, continue_into_validation);
+  const auto diverged = result.report;
+  report_run(result, best, rows, shape, options);
+  if (!finite) {
+    result.report.termination = diverged.termination;
+    result.report.message = diverged.message;
   }
-  report.message =
-      fmt::format("{}{}; one-step-ahead RMSE {:.4g} (fit){}",
-                  stopping && stopping->stopped()
-                      ? fmt::format("free-run error on the early-stopping part not improved for "
-                                    "{} iterations",
-                                    options.patience)
-                      : last.message,
-                  stopping_text, result.one_step_fit.rmse,
-                  result.one_step_validation
-                      ? fmt::format(", {:.4g} (validation)", result.one_step_validation->rmse)
-                      : "");
-  report.seconds =
+  result.report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

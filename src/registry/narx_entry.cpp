@@ -98,6 +98,7 @@ const FieldTable<NarxFitOptions>& narx_fit_option_table() {
                "fixed play thresholds (default: spread over half the input range)")
           .add("hidden_sizes", &O::hidden_sizes, "", "hidden layer sizes")
           .add("seed", &O::seed, "", "seed of the initial weights")
+          .add("starts", &O::starts, "", "initialisations trained (seed, seed + 1, ...)")
           .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations")
           .add("simulation_iterations", &O::simulation_iterations, "",
                "LM iterations on the free-run error after the one-step fit")

@@ -10,7 +10,10 @@
 //!
 //! Start: the least-squares ARX model for the linear term, network weights drawn from a uniform
 //! (Glorot) distribution by a std::mt19937_64 seeded with `seed` - the same seed and data give
-//! the same model. Ceres runs single-threaded, so the result is reproducible bit for bit.
+//! the same model. Ceres runs single-threaded, so the result is reproducible bit for bit. With
+//! `starts` > 1 the whole training runs from that many seeds and the best run is kept (the
+//! multistart engine of every Ceres-based fitter, without its screening: a few iterations say
+//! little about where a network's training ends).
 //!
 //! Then (simulation_iterations > 0 and n_y > 0) the same weights are refined on the simulation
 //! error itself - the free run over the training rows from their first measured lags - with the
@@ -51,7 +54,10 @@ struct NarxFitOptions {
   std::vector<double> play_thresholds;       //!< given thresholds [input units]
   std::vector<std::size_t> hidden_sizes{8};  //!< one or two hidden layers
   std::uint64_t seed = 1;                    //!< initial network weights
-  std::size_t max_iterations = 100;          //!< one-step LM iterations (>= 1)
+  //! Initialisations (seeds seed, seed + 1, ...), each trained in full; the one with the lowest
+  //! free-run error on the early-stopping part (without one: the lowest final cost) is kept.
+  std::size_t starts = 1;
+  std::size_t max_iterations = 100;  //!< one-step LM iterations (>= 1)
   //! LM iterations on the simulation (free-run) error after the one-step stage; 0: none.
   std::size_t simulation_iterations = 100;
   std::size_t patience = 15;             //!< early stopping (>= 1)

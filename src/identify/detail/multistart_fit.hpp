@@ -8,7 +8,8 @@
 //   std::size_t residuals() const;
 // With `global_evaluations` > 0, a global search of the bounded box (global_stage.hpp) first runs
 // from the start of lowest cost, and its best point is one more start (index starts.size()).
-// Every start runs `screening_iterations`; the best one continues up to `max_iterations`.
+// Every start runs `screening_iterations`; the best one continues up to `max_iterations`
+// (multistart_driver.hpp).
 // Parameters listed in `fixed` are held at their start value.
 // Convergence: the tests of convergence.hpp, the same for every Ceres-based fitter.
 
@@ -29,6 +30,7 @@
 
 #include "convergence.hpp"
 #include "global_stage.hpp"
+#include "multistart_driver.hpp"
 
 namespace hyst::detail {
 
@@ -167,34 +169,51 @@ MultistartResult<N> multistart_fit(const Functor& functor,
       start_costs.push_back(global.cost);
     }
   }
-  MultistartResult<N> result;
-  double best_cost = std::numeric_limits<double>::infinity();
-  ceres::Solver::Summary best_summary;
-  for (std::size_t s = 0; s < all_starts.size(); ++s) {
-    std::array<double, N> q = all_starts[s];
-    const double start_cost = start_costs[s];
-    if (!std::isfinite(start_cost)) continue;
-    const auto summary = solve_bounded(functor, q, options, options.screening_iterations);
-    result.iterations +=
-        static_cast<std::size_t>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      result.best_start = s;
-      result.initial_cost = start_cost;
-      result.q = q;
-      best_summary = summary;
-    }
-  }
-  if (!std::isfinite(best_cost)) {
+  // One local solve: from start `index`, or from where a screening run ended.
+  struct BoundedRun {
+    std::array<double, N> q{};
+    ceres::Solver::Summary summary;
+    double start_cost = 0.0;
+    double cost = 0.0;
+    bool usable = false;
+    bool finished = false;
+    std::size_t iterations = 0;
+  };
+  const auto run_from = [&](std::array<double, N> q, double start_cost, std::size_t iterations) {
+    BoundedRun run;
+    run.summary = solve_bounded(functor, q, options, iterations);
+    run.q = q;
+    run.start_cost = start_cost;
+    run.cost = run.summary.final_cost;
+    run.usable = run.summary.IsSolutionUsable();
+    run.finished = run.summary.termination_type != ceres::NO_CONVERGENCE;
+    run.iterations = static_cast<std::size_t>(run.summary.num_successful_steps +
+                                              run.summary.num_unsuccessful_steps);
+    return run;
+  };
+  const auto runs = run_multistart(
+      all_starts.size(),
+      MultistartBudget{.screening_iterations = options.screening_iterations,
+                       .max_iterations = options.max_iterations},
+      [&](std::size_t s, std::size_t iterations) {
+        // A start whose cost is not finite is not solved from.
+        if (!std::isfinite(start_costs[s])) return BoundedRun{};
+        return run_from(all_starts[s], start_costs[s], iterations);
+      },
+      [&](const BoundedRun& best, std::size_t iterations) {
+        return run_from(best.q, best.start_cost, iterations);
+      });
+  if (!runs.found) {
     throw Error(fmt::format("{} fit: Ceres found no usable solution from any of the {} starts",
                             what, starts.size()));
   }
-  if (options.max_iterations > 0 && best_summary.termination_type == ceres::NO_CONVERGENCE) {
-    best_summary = solve_bounded(functor, result.q, options, options.max_iterations);
-    result.refining_iterations = static_cast<std::size_t>(best_summary.num_successful_steps +
-                                                          best_summary.num_unsuccessful_steps);
-    result.iterations += result.refining_iterations;
-  }
+  MultistartResult<N> result;
+  result.q = runs.best.q;
+  result.best_start = runs.best_start;
+  result.initial_cost = runs.best.start_cost;
+  result.iterations = runs.iterations;
+  result.refining_iterations = runs.refining_iterations;
+  const ceres::Solver::Summary& best_summary = runs.best.summary;
   result.termination = termination_of_ceres(best_summary);
   result.message = best_summary.message;
   result.final_cost = best_summary.final_cost;
