@@ -11,19 +11,12 @@
 namespace hyst::detail {
 namespace {
 
-struct BacklashLikeCodec {
-  using Model = BacklashLike;
-  static constexpr std::string_view name = "backlash_like";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("a", &P::a, "1 / input units", "rate of approach to the branches, > 0")
-            .add("c", &P::c, "output / input units", "slope of the branches, > 0")
-            .add("b1", &P::b1, "output / input units",
-                 "B1 < c; monotone (invertible) iff B1 >= c/2");
-    return table;
+struct BacklashLikeCodec : CodecOf<BacklashLike, "backlash_like"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("a", &P::a, "1 / input units", "rate of approach to the branches, > 0")
+        .add("c", &P::c, "output / input units", "slope of the branches, > 0")
+        .add("b1", &P::b1, "output / input units", "B1 < c; monotone (invertible) iff B1 >= c/2");
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"output", state.output}};
@@ -48,10 +41,9 @@ struct BacklashLikeCodec {
   }
 };
 
-const FieldTable<DuhemFitOptions>& backlash_like_fit_option_table() {
+FieldTable<DuhemFitOptions> backlash_like_fit_option_table() {
   using O = DuhemFitOptions;
-  static const auto table = add_multistart_options(FieldTable<O>(Presence::optional));
-  return table;
+  return add_multistart_options(FieldTable<O>(Presence::optional));
 }
 
 }  // namespace

@@ -14,27 +14,21 @@
 namespace hyst::detail {
 namespace {
 
-struct BoucWenCodec {
-  using Model = BoucWen;
-  static constexpr std::string_view name = "bouc_wen";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("a", &P::a, "-", "A > 0", Presence::optional)
-            .add("beta", &P::beta, "", "beta - gamma >= 0 and beta + gamma > 0")
-            .add("gamma", &P::gamma, "", "see beta")
-            .add("n", &P::n, "-", "exponent >= 1", Presence::optional)
-            .add("stiffness", &P::stiffness, "output / input units", "k > 0", Presence::optional)
-            .add("alpha_k", &P::alpha_k, "-", "share of the linear spring in [0, 1]",
-                 Presence::optional)
-            .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
-            .add("max_input_step", &P::max_input_step, "input units", "largest RK4 step, 0 = none",
-                 Presence::optional)
-            .add("tolerance", &P::tolerance, "",
-                 "n != 1, > 0: adaptive Dormand-Prince with this tolerance", Presence::optional);
-    return table;
+struct BoucWenCodec : CodecOf<BoucWen, "bouc_wen"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("a", &P::a, "-", "A > 0", Presence::optional)
+        .add("beta", &P::beta, "", "beta - gamma >= 0 and beta + gamma > 0")
+        .add("gamma", &P::gamma, "", "see beta")
+        .add("n", &P::n, "-", "exponent >= 1", Presence::optional)
+        .add("stiffness", &P::stiffness, "output / input units", "k > 0", Presence::optional)
+        .add("alpha_k", &P::alpha_k, "-", "share of the linear spring in [0, 1]",
+             Presence::optional)
+        .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
+        .add("max_input_step", &P::max_input_step, "input units", "largest RK4 step, 0 = none",
+             Presence::optional)
+        .add("tolerance", &P::tolerance, "",
+             "n != 1, > 0: adaptive Dormand-Prince with this tolerance", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"z", state.hysteretic}};
@@ -67,13 +61,12 @@ struct BoucWenCodec {
   }
 };
 
-const FieldTable<BoucWenFitOptions>& bouc_wen_fit_option_table() {
+FieldTable<BoucWenFitOptions> bouc_wen_fit_option_table() {
   using O = BoucWenFitOptions;
-  static const auto table = add_multistart_options(
+  return add_multistart_options(
       FieldTable<O>(Presence::optional)
           .add("fit_n", &O::fit_n, "", "also fit the exponent n (false: n = 1)")
           .add("substeps", &O::substeps, "", "RK4 steps per sample"));
-  return table;
 }
 
 }  // namespace

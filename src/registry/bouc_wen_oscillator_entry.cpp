@@ -11,29 +11,23 @@
 namespace hyst::detail {
 namespace {
 
-struct BoucWenOscillatorCodec {
-  using Model = BoucWenOscillator;
-  static constexpr std::string_view name = "bouc_wen_oscillator";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("mass", &P::mass, "kg", "m > 0")
-            .add("damping", &P::damping, "N s/m", "c >= 0")
-            .add("stiffness", &P::stiffness, "N/m", "k >= 0")
-            .add("alpha", &P::alpha, "N/m", "> 0")
-            .add("beta", &P::beta, "", ">= 0 (gauge: only beta gamma and beta delta matter)")
-            .add("gamma", &P::gamma, "-", "any")
-            .add("delta", &P::delta, "-", "any")
-            .add("nu", &P::nu, "-", ">= 1", Presence::optional)
-            .add("sample_time", &P::sample_time, "s", "Ts > 0 (benchmark: 1/750)")
-            .add("substeps", &P::substeps, "", "RK4 steps per sample", Presence::optional)
-            .add("tolerance", &P::tolerance, "",
-                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional)
-            .add("input_between_samples", &P::input_between_samples,
-                 input_between_samples_from_string, "linear or hold", Presence::optional);
-    return table;
+struct BoucWenOscillatorCodec : CodecOf<BoucWenOscillator, "bouc_wen_oscillator"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("mass", &P::mass, "kg", "m > 0")
+        .add("damping", &P::damping, "N s/m", "c >= 0")
+        .add("stiffness", &P::stiffness, "N/m", "k >= 0")
+        .add("alpha", &P::alpha, "N/m", "> 0")
+        .add("beta", &P::beta, "", ">= 0 (gauge: only beta gamma and beta delta matter)")
+        .add("gamma", &P::gamma, "-", "any")
+        .add("delta", &P::delta, "-", "any")
+        .add("nu", &P::nu, "-", ">= 1", Presence::optional)
+        .add("sample_time", &P::sample_time, "s", "Ts > 0 (benchmark: 1/750)")
+        .add("substeps", &P::substeps, "", "RK4 steps per sample", Presence::optional)
+        .add("tolerance", &P::tolerance, "",
+             "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional)
+        .add("input_between_samples", &P::input_between_samples, input_between_samples_from_string,
+             "linear or hold", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& s) {
     return {{"displacement", s.displacement},
@@ -74,16 +68,15 @@ BoucWenOscillatorFitOptions with_substeps(std::size_t substeps) {
   return options;
 }
 
-const FieldTable<BoucWenOscillatorFitOptions>& bouc_wen_oscillator_fit_option_table() {
+FieldTable<BoucWenOscillatorFitOptions> bouc_wen_oscillator_fit_option_table() {
   using O = BoucWenOscillatorFitOptions;
-  static const auto table = add_multistart_options(
+  return add_multistart_options(
       FieldTable<O>(Presence::optional, with_substeps(20))
           .add("sample_time", &O::sample_time, "s", "sample time of the record")
           .add("substeps", &O::substeps, "", "RK4 steps per sample")
           .add("fit_nu", &O::fit_nu, "", "also fit nu (false: nu = 1)")
-          .add("starts", &O::starts, BoucWenOscillatorCodec::parameter_table(),
+          .add("starts", &O::starts, parameter_table<BoucWenOscillatorCodec>(),
                "starting points (model parameters); default: derived from the data"));
-  return table;
 }
 
 FitOutcome fit_bouc_wen_oscillator_request(const FitRequest& request) {

@@ -10,26 +10,20 @@
 namespace hyst::detail {
 namespace {
 
-struct DuhemCodec {
-  using Model = Duhem;
-  static constexpr std::string_view name = "duhem";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("alpha", &P::alpha, "1 / input units", "> 0")
-            .add("f_slope", &P::f_slope, "output / input units", "linear part of f, >= 0")
-            .add("f_sat", &P::f_sat, "output units", "saturating part of f, >= 0")
-            .add("v_sat", &P::v_sat, "input units", "saturation scale, > 0")
-            .add("g_peak", &P::g_peak, "output / input units",
-                 "peak of g above f_slope, <= f_sat / v_sat")
-            .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
-            .add("max_input_step", &P::max_input_step, "input units",
-                 "largest RK4 step, 0 = automatic: 1 / alpha", Presence::optional)
-            .add("tolerance", &P::tolerance, "",
-                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
-    return table;
+struct DuhemCodec : CodecOf<Duhem, "duhem"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("alpha", &P::alpha, "1 / input units", "> 0")
+        .add("f_slope", &P::f_slope, "output / input units", "linear part of f, >= 0")
+        .add("f_sat", &P::f_sat, "output units", "saturating part of f, >= 0")
+        .add("v_sat", &P::v_sat, "input units", "saturation scale, > 0")
+        .add("g_peak", &P::g_peak, "output / input units",
+             "peak of g above f_slope, <= f_sat / v_sat")
+        .add("substeps", &P::substeps, "", "minimum RK4 steps per sample", Presence::optional)
+        .add("max_input_step", &P::max_input_step, "input units",
+             "largest RK4 step, 0 = automatic: 1 / alpha", Presence::optional)
+        .add("tolerance", &P::tolerance, "",
+             "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"input", state.input}, {"output", state.output}};
@@ -60,11 +54,10 @@ struct DuhemCodec {
   }
 };
 
-const FieldTable<DuhemFitOptions>& duhem_fit_option_table() {
+FieldTable<DuhemFitOptions> duhem_fit_option_table() {
   using O = DuhemFitOptions;
-  static const auto table = add_multistart_options(
+  return add_multistart_options(
       FieldTable<O>(Presence::optional).add("substeps", &O::substeps, "", "RK4 steps per sample"));
-  return table;
 }
 
 }  // namespace

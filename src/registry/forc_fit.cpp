@@ -14,24 +14,22 @@ namespace hyst {
 
 namespace {
 
-const detail::FieldTable<PreisachForcFitOptions>& forc_fit_option_table() {
+detail::FieldTable<PreisachForcFitOptions> forc_fit_option_table() {
   using O = PreisachForcFitOptions;
   using detail::Presence;
-  static const auto table =
-      detail::FieldTable<O>(Presence::optional)
-          .add("intervals", &O::intervals, "",
-               "K: uniform table levels x_0 .. x_K, K(K+1)/2 cell weights")
-          .add("lower", &O::lower, "input units",
-               "lower end of the table (default: the lowest field of all curves)")
-          .add("upper", &O::upper, "input units",
-               "upper end of the table (default: the largest field of all curves; set it to HSat "
-               "when relays may switch up above the largest measured field)")
-          .add("saturation", &O::saturation, preisach_initial_state_from_string,
-               "where every curve starts: positive_saturation (magnetometers) or "
-               "negative_saturation")
-          .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring cell weights")
-          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
-  return table;
+  return detail::FieldTable<O>(Presence::optional)
+      .add("intervals", &O::intervals, "",
+           "K: uniform table levels x_0 .. x_K, K(K+1)/2 cell weights")
+      .add("lower", &O::lower, "input units",
+           "lower end of the table (default: the lowest field of all curves)")
+      .add("upper", &O::upper, "input units",
+           "upper end of the table (default: the largest field of all curves; set it to HSat "
+           "when relays may switch up above the largest measured field)")
+      .add("saturation", &O::saturation, preisach_initial_state_from_string,
+           "where every curve starts: positive_saturation (magnetometers) or "
+           "negative_saturation")
+      .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring cell weights")
+      .add("fit_offset", &O::fit_offset, "", "fit the output offset");
 }
 
 }  // namespace

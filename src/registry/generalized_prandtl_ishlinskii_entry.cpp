@@ -15,36 +15,33 @@
 namespace hyst::detail {
 namespace {
 
-const FieldTable<GpiParams>& gpi_parameter_table() {
+FieldTable<GpiParams> gpi_parameter_table() {
   using P = GpiParams;
   const auto exponential = [](const P& p) { return p.density == GpiDensity::exponential; };
   const auto free_density = [](const P& p) { return p.density == GpiDensity::free; };
-  static const auto table =
-      FieldTable<P>()
-          .add("envelope", &P::envelope, envelope_kind_from_string, "tanh, arctan or linear")
-          .add("ascending", &P::ascending, "",
-               "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)")
-          .add("descending", &P::descending, "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r")
-          .add("density", &P::density, gpi_density_from_string,
-               "exponential (rho, tau, alpha, m) or free (thresholds, weights)")
-          .add("rho", &P::rho, "", "exponential density p_j = rho exp(-tau r_j), rho > 0")
-          .only_if(exponential, "with the free density")
-          .add("tau", &P::tau, "1 / envelope units", "decay of the density")
-          .only_if(exponential, "with the free density")
-          .add("alpha", &P::alpha, "envelope units", "threshold spacing r_j = alpha j, alpha > 0")
-          .only_if(exponential, "with the free density")
-          .add("m", &P::m, "", "operators j = 0..m")
-          .only_if(exponential, "with the free density")
-          .add("thresholds", &P::thresholds, "envelope units", "free density: 0 = r_0 < r_1 < ...")
-          .only_if(free_density, "with the exponential density")
-          .add("weights", &P::weights, "", "free density: p_j")
-          .only_if(free_density, "with the exponential density")
-          .add("input_min", &P::input_min, "input units",
-               "operating range (ordering checked on it)")
-          .add("input_max", &P::input_max, "input units", "operating range")
-          .add("initial_input", &P::initial_input, "input units", "at rest there initially",
-               Presence::optional);
-  return table;
+  return FieldTable<P>()
+      .add("envelope", &P::envelope, envelope_kind_from_string, "tanh, arctan or linear")
+      .add("ascending", &P::ascending, "",
+           "gamma_l coefficients a0..a3 (tanh/arctan: a0 f(a1 v + a2) + a3; linear: a0 v + a1)")
+      .add("descending", &P::descending, "", "gamma_r coefficients b0..b3, gamma_l <= gamma_r")
+      .add("density", &P::density, gpi_density_from_string,
+           "exponential (rho, tau, alpha, m) or free (thresholds, weights)")
+      .add("rho", &P::rho, "", "exponential density p_j = rho exp(-tau r_j), rho > 0")
+      .only_if(exponential, "with the free density")
+      .add("tau", &P::tau, "1 / envelope units", "decay of the density")
+      .only_if(exponential, "with the free density")
+      .add("alpha", &P::alpha, "envelope units", "threshold spacing r_j = alpha j, alpha > 0")
+      .only_if(exponential, "with the free density")
+      .add("m", &P::m, "", "operators j = 0..m")
+      .only_if(exponential, "with the free density")
+      .add("thresholds", &P::thresholds, "envelope units", "free density: 0 = r_0 < r_1 < ...")
+      .only_if(free_density, "with the exponential density")
+      .add("weights", &P::weights, "", "free density: p_j")
+      .only_if(free_density, "with the exponential density")
+      .add("input_min", &P::input_min, "input units", "operating range (ordering checked on it)")
+      .add("input_max", &P::input_max, "input units", "operating range")
+      .add("initial_input", &P::initial_input, "input units", "at rest there initially",
+           Presence::optional);
 }
 
 template <class E>
@@ -53,7 +50,7 @@ struct GpiCodec {
   using Inverse = InverseGeneralizedPrandtlIshlinskii<E>;
   static constexpr std::string_view name = "gpi";
 
-  static const FieldTable<GpiParams>& parameter_table() { return gpi_parameter_table(); }
+  static FieldTable<GpiParams> parameters() { return gpi_parameter_table(); }
   static nlohmann::json state_to_json(const Model&, const typename Model::State& state) {
     return {{"play", state.play}};
   }
@@ -154,49 +151,46 @@ void add_gpi_bounds(FieldTable<GpiFitOptions>& table, std::string_view name,
       });
 }
 
-const FieldTable<GpiFitOptions>& generalized_prandtl_ishlinskii_fit_option_table() {
+FieldTable<GpiFitOptions> generalized_prandtl_ishlinskii_fit_option_table() {
   using O = GpiFitOptions;
-  static const auto table = [] {
-    FieldTable<O> table(Presence::optional);
-    table.add("m", &O::m, "", "operators j = 0..m")
-        .add("initial_state", &O::initial_state, gpi_initial_state_from_string,
-             "rest (at the first input, rising) or periodic")
-        .add("input_min", &O::input_min, "input units", "operating range (default: the data's)")
-        .add("input_max", &O::input_max, "input units", "operating range (default: the data's)")
-        .add_custom(
-            {"starts",
-             "array of objects",
-             "",
-             "starting points {a0, a1, a2, a3, b0, b1, b2, b3, rho, tau, alpha} (default: "
-             "derived from the data)",
-             {}},
-            Presence::optional,
-            [](JsonFields& fields, O& options) {
-              const auto& list = *fields.raw("starts");
-              if (!list.is_array()) {
-                throw Error(fmt::format("{}: expected an array of objects, got {}",
-                                        fields.path_of("starts"), describe_json(list)));
-              }
-              options.starts.clear();
-              for (std::size_t s = 0; s < list.size(); ++s) {
-                const auto values = gpi_values_from_json(
-                    list[s], fmt::format("{}[{}]", fields.path_of("starts"), s), true);
-                auto& start = options.starts.emplace_back();
-                for (std::size_t i = 0; i < kGpiParameterCount; ++i)
-                  start[i] = *values[i];
-              }
-            },
-            [](const O& options, nlohmann::json& json) {
-              if (options.starts.empty()) return;
-              auto& list = json["starts"] = nlohmann::json::array();
-              for (const auto& start : options.starts)
-                list.push_back(gpi_values_to_json(start));
-            });
-    table = add_multistart_options(std::move(table));
-    add_gpi_bounds(table, "lower", &O::lower);
-    add_gpi_bounds(table, "upper", &O::upper);
-    return table;
-  }();
+  FieldTable<O> table(Presence::optional);
+  table.add("m", &O::m, "", "operators j = 0..m")
+      .add("initial_state", &O::initial_state, gpi_initial_state_from_string,
+           "rest (at the first input, rising) or periodic")
+      .add("input_min", &O::input_min, "input units", "operating range (default: the data's)")
+      .add("input_max", &O::input_max, "input units", "operating range (default: the data's)")
+      .add_custom(
+          {"starts",
+           "array of objects",
+           "",
+           "starting points {a0, a1, a2, a3, b0, b1, b2, b3, rho, tau, alpha} (default: "
+           "derived from the data)",
+           {}},
+          Presence::optional,
+          [](JsonFields& fields, O& options) {
+            const auto& list = *fields.raw("starts");
+            if (!list.is_array()) {
+              throw Error(fmt::format("{}: expected an array of objects, got {}",
+                                      fields.path_of("starts"), describe_json(list)));
+            }
+            options.starts.clear();
+            for (std::size_t s = 0; s < list.size(); ++s) {
+              const auto values = gpi_values_from_json(
+                  list[s], fmt::format("{}[{}]", fields.path_of("starts"), s), true);
+              auto& start = options.starts.emplace_back();
+              for (std::size_t i = 0; i < kGpiParameterCount; ++i)
+                start[i] = *values[i];
+            }
+          },
+          [](const O& options, nlohmann::json& json) {
+            if (options.starts.empty()) return;
+            auto& list = json["starts"] = nlohmann::json::array();
+            for (const auto& start : options.starts)
+              list.push_back(gpi_values_to_json(start));
+          });
+  table = add_multistart_options(std::move(table));
+  add_gpi_bounds(table, "lower", &O::lower);
+  add_gpi_bounds(table, "upper", &O::upper);
   return table;
 }
 

@@ -10,30 +10,25 @@
 namespace hyst::detail {
 namespace {
 
-struct IkutaSmaCodec {
-  using Model = IkutaSma;
-  static constexpr std::string_view name = "ikuta_sma";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table = FieldTable<P>()
-                                  .add("martensite_finish", &P::martensite_finish, "input units",
-                                       "M_f: cooling transformation ends (< M_s)")
-                                  .add("martensite_start", &P::martensite_start, "input units",
-                                       "M_s: cooling transformation starts")
-                                  .add("austenite_start", &P::austenite_start, "input units",
-                                       "A_s: heating transformation starts (>= M_f)")
-                                  .add("austenite_finish", &P::austenite_finish, "input units",
-                                       "A_f: heating transformation ends (>= M_s)")
-                                  .add("output_austenite", &P::output_austenite, "output units",
-                                       "y_A: output at martensite fraction 0")
-                                  .add("output_martensite", &P::output_martensite, "output units",
-                                       "y_M: output at martensite fraction 1")
-                                  .add("initial_fraction", &P::initial_fraction, "",
-                                       "martensite fraction at rest, in [0, 1]", Presence::optional)
-                                  .add("initial_input", &P::initial_input, "input units",
-                                       "input of the initial rest state", Presence::optional);
-    return table;
+struct IkutaSmaCodec : CodecOf<IkutaSma, "ikuta_sma"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("martensite_finish", &P::martensite_finish, "input units",
+             "M_f: cooling transformation ends (< M_s)")
+        .add("martensite_start", &P::martensite_start, "input units",
+             "M_s: cooling transformation starts")
+        .add("austenite_start", &P::austenite_start, "input units",
+             "A_s: heating transformation starts (>= M_f)")
+        .add("austenite_finish", &P::austenite_finish, "input units",
+             "A_f: heating transformation ends (>= M_s)")
+        .add("output_austenite", &P::output_austenite, "output units",
+             "y_A: output at martensite fraction 0")
+        .add("output_martensite", &P::output_martensite, "output units",
+             "y_M: output at martensite fraction 1")
+        .add("initial_fraction", &P::initial_fraction, "", "martensite fraction at rest, in [0, 1]",
+             Presence::optional)
+        .add("initial_input", &P::initial_input, "input units", "input of the initial rest state",
+             Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"fraction", state.fraction},

@@ -12,26 +12,20 @@
 namespace hyst::detail {
 namespace {
 
-struct JilesAthertonCodec {
-  using Model = JilesAtherton;
-  static constexpr std::string_view name = "jiles_atherton";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("ms", &P::ms, "A/m", "saturation magnetisation M_s > 0")
-            .add("a", &P::a, "A/m", "anhysteretic shape, > 0")
-            .add("k", &P::k, "A/m", "pinning, > 0")
-            .add("c", &P::c, "-", "reversibility in [0, 1)")
-            .add("alpha", &P::alpha, "-", "coupling >= 0, alpha M_s / (3 a) < 1")
-            .add("variant", &P::variant, jiles_atherton_variant_from_string,
-                 "original or venkataraman (COMSOL, Altair Flux)", Presence::optional)
-            .add("max_field_step", &P::max_field_step, "A/m", "largest RK4 step in H, 0 = k / 50",
-                 Presence::optional)
-            .add("tolerance", &P::tolerance, "A/m",
-                 "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
-    return table;
+struct JilesAthertonCodec : CodecOf<JilesAtherton, "jiles_atherton"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("ms", &P::ms, "A/m", "saturation magnetisation M_s > 0")
+        .add("a", &P::a, "A/m", "anhysteretic shape, > 0")
+        .add("k", &P::k, "A/m", "pinning, > 0")
+        .add("c", &P::c, "-", "reversibility in [0, 1)")
+        .add("alpha", &P::alpha, "-", "coupling >= 0, alpha M_s / (3 a) < 1")
+        .add("variant", &P::variant, jiles_atherton_variant_from_string,
+             "original or venkataraman (COMSOL, Altair Flux)", Presence::optional)
+        .add("max_field_step", &P::max_field_step, "A/m", "largest RK4 step in H, 0 = k / 50",
+             Presence::optional)
+        .add("tolerance", &P::tolerance, "A/m",
+             "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"field", state.field},
@@ -82,9 +76,9 @@ JilesAthertonFitOptions demagnetised_start() {
   return options;
 }
 
-const FieldTable<JilesAthertonFitOptions>& jiles_atherton_fit_option_table() {
+FieldTable<JilesAthertonFitOptions> jiles_atherton_fit_option_table() {
   using O = JilesAthertonFitOptions;
-  static const auto table = add_multistart_options(
+  return add_multistart_options(
       FieldTable<O>(Presence::optional, demagnetised_start())
           .add("variant", &O::variant, jiles_atherton_variant_from_string,
                "original or venkataraman")
@@ -106,9 +100,8 @@ const FieldTable<JilesAthertonFitOptions>& jiles_atherton_fit_option_table() {
                "the same as initial_state = periodic (true) or demagnetised (false)")
           .add("max_field_step", &O::max_field_step, "A/m",
                "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000")
-          .add("starts", &O::starts, JilesAthertonCodec::parameter_table(),
+          .add("starts", &O::starts, parameter_table<JilesAthertonCodec>(),
                "starting points {ms, a, k, c, alpha}; default: derived from the data"));
-  return table;
 }
 
 FitOutcome fit_jiles_atherton_request(const FitRequest& request) {

@@ -12,23 +12,17 @@
 namespace hyst::detail {
 namespace {
 
-struct KpCodec {
-  using Model = KrasnoselskiiPokrovskii;
-  static constexpr std::string_view name = "kp";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("levels", &P::levels, "", "N cells: N(N+1)/2 kernels")
-            .add("lower", &P::lower, "input units", "lower end of the grid (all kernels -1 below)")
-            .add("upper", &P::upper, "input units", "upper end of the grid (all kernels +1 above)")
-            .add("weights", &P::weights, "output units",
-                 "mu >= 0 per kernel, kernel (i, j) at index i(i+1)/2 + j")
-            .add("ramp_cells", &P::ramp_cells, "", "ramp width of the kernels in cells",
-                 Presence::optional)
-            .add("offset", &P::offset, "output units", "y_off", Presence::optional);
-    return table;
+struct KpCodec : CodecOf<KrasnoselskiiPokrovskii, "kp"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("levels", &P::levels, "", "N cells: N(N+1)/2 kernels")
+        .add("lower", &P::lower, "input units", "lower end of the grid (all kernels -1 below)")
+        .add("upper", &P::upper, "input units", "upper end of the grid (all kernels +1 above)")
+        .add("weights", &P::weights, "output units",
+             "mu >= 0 per kernel, kernel (i, j) at index i(i+1)/2 + j")
+        .add("ramp_cells", &P::ramp_cells, "", "ramp width of the kernels in cells",
+             Presence::optional)
+        .add("offset", &P::offset, "output units", "y_off", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"kernels", state.kernels}};
@@ -53,16 +47,14 @@ struct KpCodec {
   }
 };
 
-const FieldTable<KpFitOptions>& krasnoselskii_pokrovskii_fit_option_table() {
+FieldTable<KpFitOptions> krasnoselskii_pokrovskii_fit_option_table() {
   using O = KpFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("levels", &O::levels, "", "N cells")
-          .add("lower", &O::lower, "input units", "grid range (default: the data's)")
-          .add("upper", &O::upper, "input units", "grid range (default: the data's)")
-          .add("ramp_cells", &O::ramp_cells, "", "ramp width in cells")
-          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("levels", &O::levels, "", "N cells")
+      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
+      .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+      .add("ramp_cells", &O::ramp_cells, "", "ramp width in cells")
+      .add("fit_offset", &O::fit_offset, "", "fit the output offset");
 }
 
 }  // namespace

@@ -22,32 +22,25 @@ MaxwellSlip::Orientation orientation_field(JsonFields& fields) {
   return parse_orientation(fields.string("orientation"), fields.path_of("orientation"));
 }
 
-struct MaxwellSlipCodec {
-  using Model = MaxwellSlip;
-  static constexpr std::string_view name = "maxwell_slip";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("stiffness", &P::stiffness, "force / position units", "k_i > 0 of each element")
-            .add("break_away", &P::break_away, "force units",
-                 "f_i > 0 of each element; f_i/k_i strictly increasing")
-            .add("linear_stiffness", &P::linear_stiffness, "force / position units",
-                 "k_lin >= 0 of a parallel spring; > 0 makes the model invertible",
-                 Presence::optional)
-            .add("offset", &P::offset, "force units", "F_off", Presence::optional)
-            .add_custom(
-                {"orientation", "string", "",
-                 "\"clockwise\" (F = F_off + k_lin x + sum k_i delta_i) or \"counter-clockwise\" "
-                 "(F = F_off + k_lin x - sum k_i delta_i)",
-                 "clockwise"},
-                Presence::optional,
-                [](JsonFields& fields, P& p) { p.orientation = orientation_field(fields); },
-                [](const P& p, nlohmann::json& json) {
-                  json["orientation"] = orientation_name(p.orientation);
-                });
-    return table;
+struct MaxwellSlipCodec : CodecOf<MaxwellSlip, "maxwell_slip"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("stiffness", &P::stiffness, "force / position units", "k_i > 0 of each element")
+        .add("break_away", &P::break_away, "force units",
+             "f_i > 0 of each element; f_i/k_i strictly increasing")
+        .add("linear_stiffness", &P::linear_stiffness, "force / position units",
+             "k_lin >= 0 of a parallel spring; > 0 makes the model invertible", Presence::optional)
+        .add("offset", &P::offset, "force units", "F_off", Presence::optional)
+        .add_custom(
+            {"orientation", "string", "",
+             "\"clockwise\" (F = F_off + k_lin x + sum k_i delta_i) or \"counter-clockwise\" "
+             "(F = F_off + k_lin x - sum k_i delta_i)",
+             "clockwise"},
+            Presence::optional,
+            [](JsonFields& fields, P& p) { p.orientation = orientation_field(fields); },
+            [](const P& p, nlohmann::json& json) {
+              json["orientation"] = orientation_name(p.orientation);
+            });
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"deflection", state.deflection}, {"input", state.input}};
@@ -90,34 +83,32 @@ struct MaxwellSlipCodec {
   }
 };
 
-const FieldTable<MaxwellSlipFitOptions>& maxwell_slip_fit_option_table() {
+FieldTable<MaxwellSlipFitOptions> maxwell_slip_fit_option_table() {
   using O = MaxwellSlipFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("elements", &O::elements, "", "N elements when slip_displacements is not given")
-          .add("slip_displacements", &O::slip_displacements, "position units",
-               "fixed f_i/k_i, increasing (default: uniform up to half the range)")
-          .add("fit_linear_stiffness", &O::fit_linear_stiffness, "", "fit k_lin >= 0")
-          .add("fit_offset", &O::fit_offset, "", "fit the force offset")
-          .add_custom(
-              {"orientation", "string", "",
-               "loop orientation in the (x, F) plane: \"auto\" (the sign of the "
-               "enclosed area, clockwise when the area is 0), \"clockwise\" or "
-               "\"counter-clockwise\"",
-               "auto"},
-              Presence::optional,
-              [](JsonFields& fields, O& options) {
-                if (fields.string("orientation") == "auto") {
-                  options.orientation.reset();
-                } else {
-                  options.orientation = orientation_field(fields);
-                }
-              },
-              [](const O& options, nlohmann::json& json) {
-                json["orientation"] = options.orientation ? orientation_name(*options.orientation)
-                                                          : std::string_view("auto");
-              });
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("elements", &O::elements, "", "N elements when slip_displacements is not given")
+      .add("slip_displacements", &O::slip_displacements, "position units",
+           "fixed f_i/k_i, increasing (default: uniform up to half the range)")
+      .add("fit_linear_stiffness", &O::fit_linear_stiffness, "", "fit k_lin >= 0")
+      .add("fit_offset", &O::fit_offset, "", "fit the force offset")
+      .add_custom(
+          {"orientation", "string", "",
+           "loop orientation in the (x, F) plane: \"auto\" (the sign of the "
+           "enclosed area, clockwise when the area is 0), \"clockwise\" or "
+           "\"counter-clockwise\"",
+           "auto"},
+          Presence::optional,
+          [](JsonFields& fields, O& options) {
+            if (fields.string("orientation") == "auto") {
+              options.orientation.reset();
+            } else {
+              options.orientation = orientation_field(fields);
+            }
+          },
+          [](const O& options, nlohmann::json& json) {
+            json["orientation"] = options.orientation ? orientation_name(*options.orientation)
+                                                      : std::string_view("auto");
+          });
 }
 
 }  // namespace

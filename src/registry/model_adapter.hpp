@@ -2,12 +2,10 @@
 // DynamicModel and DynamicInverse for any concrete model, given a codec that knows the model's
 // JSON form:
 //
-//   struct Codec {
-//     using Model = ...;
-//     static constexpr std::string_view name = "...";
-//     // The table of Model::Params (field_table.hpp): the model file's "params" (read and
-//     // written) and the entry's schema are derived from it.
-//     static const FieldTable<typename Model::Params>& parameter_table();
+//   struct Codec : CodecOf<Model, "name"> {  // Model, P (= Model::Params) and name
+//     // The table of Model::Params (field_table.hpp), built once (parameter_table<Codec>()):
+//     // the model file's "params" (read and written) and the entry's schema are derived from it.
+//     static FieldTable<P> parameters();
 //     static nlohmann::json state_to_json(const Model&, const typename Model::State&);
 //     static typename Model::State state_from_json(const Model&, detail::JsonFields&);
 //     static std::size_t parameter_count(const Model&);
@@ -22,11 +20,14 @@
 //     static std::string runaway_explanation(const Model&);
 //   };
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -40,6 +41,30 @@
 
 namespace hyst::detail {
 
+// A codec's name as a template argument: CodecOf<BoucWen, "bouc_wen">.
+template <std::size_t N>
+struct CodecName {
+  constexpr CodecName(const char (&text)[N]) { std::copy_n(text, N, chars); }
+  constexpr std::string_view view() const { return {chars, N - 1}; }
+  char chars[N]{};
+};
+
+// What a codec starts from: its model, P (the parameter struct whose members the parameter
+// table's rows point to) and the name of its entry and model files.
+template <class M, CodecName Name>
+struct CodecOf {
+  using Model = M;
+  using P = typename M::Params;
+  static constexpr std::string_view name = Name.view();
+};
+
+// The codec's parameter table, built on first use and kept.
+template <class Codec>
+const FieldTable<typename Codec::Model::Params>& parameter_table() {
+  static const auto table = Codec::parameters();
+  return table;
+}
+
 template <class Codec>
 class ModelAdapter final : public DynamicModel {
  public:
@@ -52,7 +77,7 @@ class ModelAdapter final : public DynamicModel {
   std::unique_ptr<DynamicModel> clone() const override {
     return std::make_unique<ModelAdapter>(*this);
   }
-  nlohmann::json params() const override { return Codec::parameter_table().write(model_.params()); }
+  nlohmann::json params() const override { return parameter_table<Codec>().write(model_.params()); }
   nlohmann::json state() const override { return Codec::state_to_json(model_, state_); }
   void set_state(const nlohmann::json& state) override {
     JsonFields fields(state, "state");
@@ -164,7 +189,7 @@ std::unique_ptr<DynamicModel> make_dynamic_model(typename Codec::Model::Params p
 // codec's parameter table: every field read, none left over.
 template <class Codec>
 typename Codec::Model::Params params_of_json(const nlohmann::json& params_json, std::string path) {
-  return Codec::parameter_table().read(params_json, std::move(path));
+  return parameter_table<Codec>().read(params_json, std::move(path));
 }
 
 // The model of a model file's "params" (and "state", may be null): an entry's `create`.
@@ -200,18 +225,19 @@ ModelEntry entry_of(std::string description) {
   ModelEntry entry;
   entry.name = std::string(Codec::name);
   entry.description = std::move(description);
-  entry.parameters = Codec::parameter_table().schema();
+  entry.parameters = parameter_table<Codec>().schema();
   entry.create = &create_from_json<Codec>;
   return entry;
 }
 
-// Gives `entry` a fitter of one record, `fit(input, output, options)`, whose options `table` (a
-// static one: the entry keeps a reference) reads and documents.
+// Gives `entry` a fitter of one record, `fit(input, output, options)`, whose options `table`
+// reads and documents.
 template <class Codec, class Options, class Fit>
-void set_fitter(ModelEntry& entry, const FieldTable<Options>& table, Fit fit) {
+void set_fitter(ModelEntry& entry, FieldTable<Options> table, Fit fit) {
   entry.fit_options = table.schema();
-  entry.fit = [&table, fit](const FitRequest& request) {
-    return fit_with_table<Codec>(request, table, fit);
+  entry.fit = [table = std::make_shared<const FieldTable<Options>>(std::move(table)),
+               fit](const FitRequest& request) {
+    return fit_with_table<Codec>(request, *table, fit);
   };
 }
 

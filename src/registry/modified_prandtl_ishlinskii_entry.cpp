@@ -39,38 +39,31 @@ void add_output_limit(FieldTable<ModifiedPrandtlIshlinskii::Params>& table, std:
       });
 }
 
-struct ModifiedPiCodec {
-  using Model = ModifiedPrandtlIshlinskii;
-  static constexpr std::string_view name = "modified_pi";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
+struct ModifiedPiCodec : CodecOf<ModifiedPrandtlIshlinskii, "modified_pi"> {
+  static FieldTable<P> parameters() {
     using Pi = PrandtlIshlinskii::Params;
     using DeadZone = DeadZoneSuperposition::Params;
     // The file's fields are flat: the PI part's offset is "pi_offset", the dead zone's fields
     // have "dead_zone_" in front.
-    static const auto pi =
+    const auto pi =
         FieldTable<Pi>()
             .add("thresholds", &Pi::thresholds, "input units",
                  "play half-widths 0 = r_0 < r_1 < ...")
             .add("weights", &Pi::weights, "output / input units", "p_j, one per threshold")
             .add("pi_offset", &Pi::offset, "output units", "offset of the PI part",
                  Presence::optional);
-    static const auto dead_zone = FieldTable<DeadZone>()
-                                      .add("dead_zone_thresholds", &DeadZone::thresholds,
-                                           "output units", "d_i, increasing, one of them 0")
-                                      .add("dead_zone_weights", &DeadZone::weights, "",
-                                           "g_i; invertible iff outward partial sums > 0");
-    static const auto table = [] {
-      auto table = FieldTable<P>()
-                       .add_all(&P::pi, pi)
-                       .add_all(&P::dead_zone, dead_zone)
-                       .add("offset", &P::offset, "output units",
-                            "y_off added after the dead zones", Presence::optional);
-      add_output_limit(table, "output_min", &P::output_min, "lower");
-      add_output_limit(table, "output_max", &P::output_max, "upper");
-      return table;
-    }();
+    const auto dead_zone = FieldTable<DeadZone>()
+                               .add("dead_zone_thresholds", &DeadZone::thresholds, "output units",
+                                    "d_i, increasing, one of them 0")
+                               .add("dead_zone_weights", &DeadZone::weights, "",
+                                    "g_i; invertible iff outward partial sums > 0");
+    auto table = FieldTable<P>()
+                     .add_all(&P::pi, pi)
+                     .add_all(&P::dead_zone, dead_zone)
+                     .add("offset", &P::offset, "output units", "y_off added after the dead zones",
+                          Presence::optional);
+    add_output_limit(table, "output_min", &P::output_min, "lower");
+    add_output_limit(table, "output_max", &P::output_max, "upper");
     return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -131,26 +124,23 @@ std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann:
   }
 }
 
-const FieldTable<ModifiedPiFitOptions>& modified_prandtl_ishlinskii_fit_option_table() {
+FieldTable<ModifiedPiFitOptions> modified_prandtl_ishlinskii_fit_option_table() {
   using O = ModifiedPiFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-          .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
-          .add("dead_zones", &O::dead_zones, "", "dead zones per side of the inverse map")
-          .add("dead_zone_thresholds", &O::dead_zone_thresholds, "output units",
-               "thresholds of the inverse dead-zone map around the offset, containing 0")
-          .add("output_offset", &O::output_offset, "output units",
-               "y_off (default: mid-range of the output)")
-          .add("min_weight", &O::min_weight, "",
-               "relative lower bound of p_0 and of the map's slopes")
-          .add("initial_state", &O::initial_state, pi_initial_state_from_string,
-               "virgin (plays at 0) or periodic (one period run first)")
-          .add("clamp_output", &O::clamp_output, "",
-               "limit the output to the fitted record's output range; false = no limits")
-          .add("output_margin", &O::output_margin, "",
-               "widen those limits by this fraction of the output range on each side");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+      .add("dead_zones", &O::dead_zones, "", "dead zones per side of the inverse map")
+      .add("dead_zone_thresholds", &O::dead_zone_thresholds, "output units",
+           "thresholds of the inverse dead-zone map around the offset, containing 0")
+      .add("output_offset", &O::output_offset, "output units",
+           "y_off (default: mid-range of the output)")
+      .add("min_weight", &O::min_weight, "", "relative lower bound of p_0 and of the map's slopes")
+      .add("initial_state", &O::initial_state, pi_initial_state_from_string,
+           "virgin (plays at 0) or periodic (one period run first)")
+      .add("clamp_output", &O::clamp_output, "",
+           "limit the output to the fitted record's output range; false = no limits")
+      .add("output_margin", &O::output_margin, "",
+           "widen those limits by this fraction of the output range on each side");
 }
 
 }  // namespace
@@ -161,7 +151,7 @@ ModelEntry modified_prandtl_ishlinskii_entry() {
   entry.description =
       "modified PI (Kuhnen): PI followed by dead-zone superposition; analytic inverse; weights "
       "by constrained least squares";
-  entry.parameters = ModifiedPiCodec::parameter_table().schema();
+  entry.parameters = parameter_table<ModifiedPiCodec>().schema();
   entry.create = &create_modified_prandtl_ishlinskii;
   set_fitter<ModifiedPiCodec>(entry, modified_prandtl_ishlinskii_fit_option_table(),
                               &fit_modified_prandtl_ishlinskii);

@@ -18,30 +18,23 @@ namespace {
 // thousand scales away from it has left anything the model describes.
 constexpr double kRunawayScales = 1e3;
 
-struct NarxCodec {
-  using Model = Narx;
-  static constexpr std::string_view name = "narx";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("input_lags", &P::input_lags, "",
-                 "n_u: past inputs v[k-1..k-n_u] (v[k] always used)")
-            .add("output_lags", &P::output_lags, "", "n_y: past outputs y[k-1..k-n_y]")
-            .add("play_thresholds", &P::play_thresholds, "input units", "r_i > 0, increasing")
-            .add("hidden_sizes", &P::hidden_sizes, "", "one or two tanh hidden layers")
-            .add("weights", &P::weights, "",
-                 "per hidden layer W (row-major) then b; output weights, constant, linear weights")
-            .add("input_offset", &P::input_offset, "input units", "normalisation v_off",
-                 Presence::optional)
-            .add("input_scale", &P::input_scale, "input units", "normalisation v_scale > 0",
-                 Presence::optional)
-            .add("output_offset", &P::output_offset, "output units", "normalisation y_off",
-                 Presence::optional)
-            .add("output_scale", &P::output_scale, "output units", "normalisation y_scale > 0",
-                 Presence::optional);
-    return table;
+struct NarxCodec : CodecOf<Narx, "narx"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("input_lags", &P::input_lags, "", "n_u: past inputs v[k-1..k-n_u] (v[k] always used)")
+        .add("output_lags", &P::output_lags, "", "n_y: past outputs y[k-1..k-n_y]")
+        .add("play_thresholds", &P::play_thresholds, "input units", "r_i > 0, increasing")
+        .add("hidden_sizes", &P::hidden_sizes, "", "one or two tanh hidden layers")
+        .add("weights", &P::weights, "",
+             "per hidden layer W (row-major) then b; output weights, constant, linear weights")
+        .add("input_offset", &P::input_offset, "input units", "normalisation v_off",
+             Presence::optional)
+        .add("input_scale", &P::input_scale, "input units", "normalisation v_scale > 0",
+             Presence::optional)
+        .add("output_offset", &P::output_offset, "output units", "normalisation y_off",
+             Presence::optional)
+        .add("output_scale", &P::output_scale, "output units", "normalisation y_scale > 0",
+             Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"past_inputs", state.past_inputs},
@@ -87,26 +80,24 @@ struct NarxCodec {
 
 using NarxAdapter = ModelAdapter<NarxCodec>;
 
-const FieldTable<NarxFitOptions>& narx_fit_option_table() {
+FieldTable<NarxFitOptions> narx_fit_option_table() {
   using O = NarxFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("input_lags", &O::input_lags, "", "n_u")
-          .add("output_lags", &O::output_lags, "", "n_y")
-          .add("plays", &O::plays, "", "plays when thresholds are not given")
-          .add("play_thresholds", &O::play_thresholds, "input units",
-               "fixed play thresholds (default: spread over half the input range)")
-          .add("hidden_sizes", &O::hidden_sizes, "", "hidden layer sizes")
-          .add("seed", &O::seed, "", "seed of the initial weights")
-          .add("starts", &O::starts, "", "initialisations trained (seed, seed + 1, ...)")
-          .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations")
-          .add("simulation_iterations", &O::simulation_iterations, "",
-               "LM iterations on the free-run error after the one-step fit")
-          .add("patience", &O::patience, "", "early stopping: iterations without improvement")
-          .add("early_stopping_fraction", &O::early_stopping_fraction, "",
-               "end of the fit part monitored in free run")
-          .add("regularization", &O::regularization, "", "ridge weight on the network weights");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("input_lags", &O::input_lags, "", "n_u")
+      .add("output_lags", &O::output_lags, "", "n_y")
+      .add("plays", &O::plays, "", "plays when thresholds are not given")
+      .add("play_thresholds", &O::play_thresholds, "input units",
+           "fixed play thresholds (default: spread over half the input range)")
+      .add("hidden_sizes", &O::hidden_sizes, "", "hidden layer sizes")
+      .add("seed", &O::seed, "", "seed of the initial weights")
+      .add("starts", &O::starts, "", "initialisations trained (seed, seed + 1, ...)")
+      .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations")
+      .add("simulation_iterations", &O::simulation_iterations, "",
+           "LM iterations on the free-run error after the one-step fit")
+      .add("patience", &O::patience, "", "early stopping: iterations without improvement")
+      .add("early_stopping_fraction", &O::early_stopping_fraction, "",
+           "end of the fit part monitored in free run")
+      .add("regularization", &O::regularization, "", "ridge weight on the network weights");
 }
 
 }  // namespace

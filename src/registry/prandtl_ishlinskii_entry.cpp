@@ -35,21 +35,14 @@ class PiInverseAdapter final : public DynamicInverse {
   PiBatchWorkspace workspace_;
 };
 
-struct PrandtlIshlinskiiCodec {
-  using Model = PrandtlIshlinskii;
-  static constexpr std::string_view name = "pi";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("thresholds", &P::thresholds, "input units",
-                 "play half-widths r_j: 0 = r_0 < r_1 < ... (r_0 = 0 is the linear term)")
-            .add("weights", &P::weights, "output / input units",
-                 "p_j, one per threshold; invertible iff p_0 > 0 and all partial sums > 0")
-            .add("offset", &P::offset, "output units", "y_off added to the output",
-                 Presence::optional);
-    return table;
+struct PrandtlIshlinskiiCodec : CodecOf<PrandtlIshlinskii, "pi"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("thresholds", &P::thresholds, "input units",
+             "play half-widths r_j: 0 = r_0 < r_1 < ... (r_0 = 0 is the linear term)")
+        .add("weights", &P::weights, "output / input units",
+             "p_j, one per threshold; invertible iff p_0 > 0 and all partial sums > 0")
+        .add("offset", &P::offset, "output units", "y_off added to the output", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return play_state_to_json(state);
@@ -82,18 +75,16 @@ struct PrandtlIshlinskiiCodec {
 
 using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
 
-const FieldTable<PiFitOptions>& prandtl_ishlinskii_fit_option_table() {
+FieldTable<PiFitOptions> prandtl_ishlinskii_fit_option_table() {
   using O = PiFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-          .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
-          .add("fit_offset", &O::fit_offset, "", "fit the output offset")
-          .add("min_linear_weight", &O::min_linear_weight, "",
-               "lower bound of p_0, keeps the model invertible")
-          .add("initial_state", &O::initial_state, pi_initial_state_from_string,
-               "virgin (plays at 0) or periodic (one period run first)");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+      .add("fit_offset", &O::fit_offset, "", "fit the output offset")
+      .add("min_linear_weight", &O::min_linear_weight, "",
+           "lower bound of p_0, keeps the model invertible")
+      .add("initial_state", &O::initial_state, pi_initial_state_from_string,
+           "virgin (plays at 0) or periodic (one period run first)");
 }
 
 }  // namespace

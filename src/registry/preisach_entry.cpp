@@ -18,13 +18,10 @@
 namespace hyst::detail {
 namespace {
 
-struct PreisachCodec : PreisachCodecCommon<InversePreisach> {
-  using Model = Preisach;
-  static constexpr std::string_view name = "preisach";
-
-  static const FieldTable<Model::Params>& parameter_table() {
+struct PreisachCodec : PreisachCodecCommon<Preisach, InversePreisach, "preisach"> {
+  static FieldTable<P> parameters() {
     using E = RelayGridEverett::Params;
-    static const auto everett =
+    const auto everett =
         FieldTable<E>()
             .add("levels", &E::levels, "", "N threshold levels: N(N+1)/2 relays alpha >= beta")
             .add("lower", &E::lower, "input units",
@@ -35,8 +32,7 @@ struct PreisachCodec : PreisachCodecCommon<InversePreisach> {
                  "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j")
             .add("layout", &E::layout, preisach_grid_layout_from_string,
                  "cell_centred or endpoints", Presence::optional);
-    static const auto table = preisach_parameter_table<Model::Params>(everett);
-    return table;
+    return preisach_parameter_table<P>(everett);
   }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.weights.size() + 1;
@@ -54,19 +50,17 @@ struct PreisachCodec : PreisachCodecCommon<InversePreisach> {
 
 using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
-const FieldTable<PreisachWeightFitOptions>& preisach_fit_option_table() {
+FieldTable<PreisachWeightFitOptions> preisach_fit_option_table() {
   using O = PreisachWeightFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("levels", &O::levels, "", "N threshold levels")
-          .add("lower", &O::lower, "input units", "grid range (default: the data's)")
-          .add("upper", &O::upper, "input units", "grid range (default: the data's)")
-          .add("layout", &O::layout, preisach_grid_layout_from_string, "cell_centred or endpoints")
-          .add("initial_state", &O::initial_state, preisach_initial_state_from_string,
-               "state the record starts from")
-          .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring relay weights")
-          .add("fit_offset", &O::fit_offset, "", "fit the output offset");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("levels", &O::levels, "", "N threshold levels")
+      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
+      .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+      .add("layout", &O::layout, preisach_grid_layout_from_string, "cell_centred or endpoints")
+      .add("initial_state", &O::initial_state, preisach_initial_state_from_string,
+           "state the record starts from")
+      .add("smoothness", &O::smoothness, "", "Tikhonov weight on neighbouring relay weights")
+      .add("fit_offset", &O::fit_offset, "", "fit the output offset");
 }
 
 }  // namespace

@@ -61,8 +61,8 @@ PreisachState preisach_state_from_json(const Model& model, JsonFields& fields) {
 
 // What the codecs of both Preisach entries share: the state's JSON form and the numerical
 // inverse (InversePreisach or InverseTabulatedPreisach), within the given input limits.
-template <class Inverse>
-struct PreisachCodecCommon {
+template <class M, class Inverse, CodecName Name>
+struct PreisachCodecCommon : CodecOf<M, Name> {
   template <class Model>
   static nlohmann::json state_to_json(const Model&, const PreisachState& state) {
     return preisach_state_to_json(state);

@@ -11,23 +11,17 @@
 namespace hyst::detail {
 namespace {
 
-struct RateDependentPiCodec {
-  using Model = RateDependentPrandtlIshlinskii;
-  static constexpr std::string_view name = "rate_dependent_pi";
-
-  static const FieldTable<Model::Params>& parameter_table() {
-    using P = Model::Params;
-    static const auto table =
-        FieldTable<P>()
-            .add("thresholds", &P::thresholds, "input units",
-                 "nominal (zero-rate) half-widths 0 = r_0 < r_1 < ...")
-            .add("weights", &P::weights, "output / input units", "p_j, one per threshold")
-            .add("rate_gain", &P::rate_gain, "s", "beta >= 0: threshold increase per unit |dv/dt|")
-            .add("sample_time", &P::sample_time, "s", "Ts > 0 of the input samples")
-            .add("rate_filter", &P::rate_filter, "s", "time constant >= 0 of the rate low-pass",
-                 Presence::optional)
-            .add("offset", &P::offset, "output units", "y_off", Presence::optional);
-    return table;
+struct RateDependentPiCodec : CodecOf<RateDependentPrandtlIshlinskii, "rate_dependent_pi"> {
+  static FieldTable<P> parameters() {
+    return FieldTable<P>()
+        .add("thresholds", &P::thresholds, "input units",
+             "nominal (zero-rate) half-widths 0 = r_0 < r_1 < ...")
+        .add("weights", &P::weights, "output / input units", "p_j, one per threshold")
+        .add("rate_gain", &P::rate_gain, "s", "beta >= 0: threshold increase per unit |dv/dt|")
+        .add("sample_time", &P::sample_time, "s", "Ts > 0 of the input samples")
+        .add("rate_filter", &P::rate_filter, "s", "time constant >= 0 of the rate low-pass",
+             Presence::optional)
+        .add("offset", &P::offset, "output units", "y_off", Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return {{"play", state.play}, {"input", state.input}, {"rate", state.rate}};
@@ -57,19 +51,17 @@ struct RateDependentPiCodec {
   }
 };
 
-const FieldTable<RateDependentPiFitOptions>& rate_dependent_prandtl_ishlinskii_fit_option_table() {
+FieldTable<RateDependentPiFitOptions> rate_dependent_prandtl_ishlinskii_fit_option_table() {
   using O = RateDependentPiFitOptions;
-  static const auto table =
-      FieldTable<O>(Presence::optional)
-          .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-          .add("thresholds", &O::thresholds, "input units",
-               "fixed nominal thresholds (default: uniform)")
-          .add("rate_gain", &O::rate_gain, "s", "fixed beta >= 0 (0: the classical PI)")
-          .add("sample_time", &O::sample_time, "s", "Ts of the record")
-          .add("rate_filter", &O::rate_filter, "s", "rate low-pass time constant")
-          .add("fit_offset", &O::fit_offset, "", "fit the output offset")
-          .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
-  return table;
+  return FieldTable<O>(Presence::optional)
+      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
+      .add("thresholds", &O::thresholds, "input units",
+           "fixed nominal thresholds (default: uniform)")
+      .add("rate_gain", &O::rate_gain, "s", "fixed beta >= 0 (0: the classical PI)")
+      .add("sample_time", &O::sample_time, "s", "Ts of the record")
+      .add("rate_filter", &O::rate_filter, "s", "rate low-pass time constant")
+      .add("fit_offset", &O::fit_offset, "", "fit the output offset")
+      .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
 }
 
 }  // namespace

@@ -18,13 +18,11 @@
 namespace hyst::detail {
 namespace {
 
-struct TabulatedPreisachCodec : PreisachCodecCommon<InverseTabulatedPreisach> {
-  using Model = TabulatedPreisach;
-  static constexpr std::string_view name = "tabulated_preisach";
-
-  static const FieldTable<Model::Params>& parameter_table() {
+struct TabulatedPreisachCodec
+    : PreisachCodecCommon<TabulatedPreisach, InverseTabulatedPreisach, "tabulated_preisach"> {
+  static FieldTable<P> parameters() {
     using E = TabulatedEverett::Params;
-    static const auto everett =
+    const auto everett =
         FieldTable<E>()
             .add("levels", &E::levels, "input units",
                  "x_0 < x_1 < ... < x_K (K >= 1): the table's levels; inputs outside act as "
@@ -32,8 +30,7 @@ struct TabulatedPreisachCodec : PreisachCodecCommon<InverseTabulatedPreisach> {
             .add("values", &E::values, "output units",
                  "E(x_a, x_c) for c < a, K(K+1)/2 values at index a(a-1)/2 + c; every cell weight "
                  "E[i+1,j] - E[i,j] - E[i+1,j+1] + E[i,j+1] >= 0");
-    static const auto table = preisach_parameter_table<Model::Params>(everett);
-    return table;
+    return preisach_parameter_table<P>(everett);
   }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.values.size() + 1;
