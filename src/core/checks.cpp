@@ -32,4 +32,21 @@ void require_not_empty(std::size_t size, std::string_view name) {
   if (size == 0) throw Error(fmt::format("{} is empty", name));
 }
 
+void require_increasing_from_zero(std::span<const double> values, std::string_view what,
+                                  std::string_view symbol, std::string_view field,
+                                  std::string_view why_zero) {
+  if (values.empty()) return;
+  if (values[0] != 0.0) {
+    throw Error(fmt::format("{} {}[0] = {} must be 0 ({})", what, symbol, values[0], why_zero),
+                fmt::format("{}[0]", field));
+  }
+  for (std::size_t j = 1; j < values.size(); ++j) {
+    if (!(values[j] > values[j - 1])) {
+      throw Error(fmt::format("{} {}[{}] = {} must be > {}[{}] = {}", what, symbol, j, values[j],
+                              symbol, j - 1, values[j - 1]),
+                  fmt::format("{}[{}]", field, j));
+    }
+  }
+}
+
 }  // namespace hyst

@@ -40,13 +40,9 @@ BoucWenFit fit_bouc_wen(std::span<const double> input, std::span<const double> o
   const auto s = detail::record_scale(input, output);
   const BoucWenKernel kernel{{1.0 / s.input_span, 1.0, 1.0, s.slope, s.output_span},
                              options.substeps};
-  detail::MultistartOptions<5> ms;
-  ms.lower = {1e-3, 0.5, 1.0, 0.0, 0.0};
-  ms.upper = {1e3, 5.0, 5.0, 10.0, 10.0};
+  auto ms = detail::multistart_options<5>({1e-3, 0.5, 1.0, 0.0, 0.0}, {1e3, 5.0, 5.0, 10.0, 10.0},
+                                          options);
   if (!options.fit_n) ms.fixed = {2};
-  ms.global_evaluations = options.global_evaluations;
-  ms.screening_iterations = options.screening_iterations;
-  ms.max_iterations = options.max_iterations;
   std::vector<std::array<double, 5>> starts;
   for (double rho : {2.0, 8.0}) {
     for (double sigma : {0.6, 0.9})

@@ -175,14 +175,10 @@ BoucWenOscillatorFit fit_bouc_wen_oscillator(std::span<const BoucWenOscillatorRe
   const double product_scale = std::max(std::abs(first[4]), std::abs(first[5]));
   scale[4] = scale[5] = product_scale > 0.0 ? product_scale : 1.0;
   scale[kNu] = 1.0;
-  detail::MultistartOptions<kOscillatorParameters> ms;
-  ms.lower = {1e-3, 0.0, 0.0, 1e-3, -1e3, -1e3, 1.0};
-  ms.upper = {1e3, 1e3 + 1e3 * (first[1] == 0.0), 1e2, 1e2, 1e3, 1e3, 4.0};
+  auto ms = detail::multistart_options<kOscillatorParameters>(
+      {1e-3, 0.0, 0.0, 1e-3, -1e3, -1e3, 1.0},
+      {1e3, 1e3 + 1e3 * (first[1] == 0.0), 1e2, 1e2, 1e3, 1e3, 4.0}, options);
   if (!options.fit_nu) ms.fixed = {kNu};
-  ms.global_evaluations = options.global_evaluations;
-  ms.screening_iterations = options.screening_iterations;
-  ms.max_iterations = options.max_iterations;
-  ms.function_tolerance = options.function_tolerance;
   std::vector<OscillatorVector> physical_starts;
   for (const auto& start : starts)
     physical_starts.push_back(physical_of(start));

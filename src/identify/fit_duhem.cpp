@@ -76,12 +76,8 @@ DuhemFit fit_duhem(std::span<const double> input, std::span<const double> output
   const auto s = detail::record_scale(input, output);
   const DuhemKernel kernel{{1.0 / s.input_span, s.slope, s.output_span, s.input_span, 1.0},
                            options.substeps};
-  detail::MultistartOptions<5> ms;
-  ms.lower = {1e-3, 0.0, 0.0, 1e-3, -1.0};
-  ms.upper = {1e3, 20.0, 20.0, 1e2, 1.0};
-  ms.global_evaluations = options.global_evaluations;
-  ms.screening_iterations = options.screening_iterations;
-  ms.max_iterations = options.max_iterations;
+  const auto ms = detail::multistart_options<5>({1e-3, 0.0, 0.0, 1e-3, -1.0},
+                                                {1e3, 20.0, 20.0, 1e2, 1.0}, options);
   std::vector<std::array<double, 5>> starts;
   for (double alpha : {3.0, 15.0}) {
     for (double r : {0.0, 0.5})
@@ -107,12 +103,7 @@ BacklashLikeFit fit_backlash_like(std::span<const double> input, std::span<const
                                   const DuhemFitOptions& options) {
   const auto s = detail::record_scale(input, output);
   const BacklashLikeKernel kernel{{1.0 / s.input_span, s.slope, 1.0}};
-  detail::MultistartOptions<3> ms;
-  ms.lower = {1e-3, 1e-3, -1.0};
-  ms.upper = {1e3, 1e2, 0.999};
-  ms.global_evaluations = options.global_evaluations;
-  ms.screening_iterations = options.screening_iterations;
-  ms.max_iterations = options.max_iterations;
+  const auto ms = detail::multistart_options<3>({1e-3, 1e-3, -1.0}, {1e3, 1e2, 0.999}, options);
   std::vector<std::array<double, 3>> starts;
   for (double a : {3.0, 15.0}) {
     for (double r : {0.2, 0.7})

@@ -319,9 +319,7 @@ CostFunctor gpi_cost_functor(const FitData& data, std::size_t m) {
 detail::MultistartOptions<kGpiParameterCount> engine_options(
     const GpiFitOptions& options, const std::array<GpiParameterVector, 2>& bounds,
     const std::vector<GpiParameterVector>& starts) {
-  detail::MultistartOptions<kGpiParameterCount> engine;
-  engine.lower = bounds[0];
-  engine.upper = bounds[1];
+  auto engine = detail::multistart_options(bounds[0], bounds[1], options);
   double rho_min = std::numeric_limits<double>::infinity(), rho_max = 0.0;
   for (const auto& start : starts) {
     rho_min = std::min(rho_min, start[kRho]);
@@ -330,9 +328,6 @@ detail::MultistartOptions<kGpiParameterCount> engine_options(
   engine.lower[kRho] = 0.5 * rho_min;
   engine.upper[kRho] = 2.0 * rho_max;
   engine.fixed = {static_cast<int>(kRho)};
-  engine.screening_iterations = options.screening_iterations;
-  engine.max_iterations = options.max_iterations;
-  engine.function_tolerance = options.function_tolerance;
   return engine;
 }
 

@@ -63,19 +63,8 @@ void validate_options(const PiFitOptions& options) {
                   fmt::format("thresholds[{}]", j));
     }
   }
-  if (!r.empty() && r[0] != 0.0) {
-    throw Error(fmt::format("PI fit threshold r[0] = {} must be 0 (the r = 0 play carries the "
-                            "linear term)",
-                            r[0]),
-                "thresholds[0]");
-  }
-  for (std::size_t j = 1; j < r.size(); ++j) {
-    if (!(r[j] > r[j - 1])) {
-      throw Error(
-          fmt::format("PI fit threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]),
-          fmt::format("thresholds[{}]", j));
-    }
-  }
+  require_increasing_from_zero(r, "PI fit threshold", "r", "thresholds",
+                               "the r = 0 play carries the linear term");
   if (!(std::isfinite(options.min_linear_weight) && options.min_linear_weight > 0.0)) {
     throw Error(fmt::format("PI fit min_linear_weight = {} must be finite and > 0",
                             options.min_linear_weight),

@@ -70,19 +70,8 @@ void validate_free(const GpiParams& params) {
     require_finite_field(r[j], fmt::format("threshold r[{}]", j), fmt::format("thresholds[{}]", j));
     require_finite_field(p[j], fmt::format("weight p[{}]", j), fmt::format("weights[{}]", j));
   }
-  if (r[0] != 0.0) {
-    throw Error(
-        fmt::format("GPI threshold r[0] = {} must be 0 (the r = 0 operator carries the envelope)",
-                    r[0]),
-        "thresholds[0]");
-  }
-  for (std::size_t j = 1; j < r.size(); ++j) {
-    if (!(r[j] > r[j - 1])) {
-      throw Error(
-          fmt::format("GPI threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]),
-          fmt::format("thresholds[{}]", j));
-    }
-  }
+  require_increasing_from_zero(r, "GPI threshold", "r", "thresholds",
+                               "the r = 0 operator carries the envelope");
   if (!(p[0] > 0.0)) {
     throw Error(fmt::format("GPI weight p[0] = {} must be > 0 (monotone, invertible model)", p[0]),
                 "weights[0]");

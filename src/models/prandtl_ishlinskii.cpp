@@ -31,19 +31,8 @@ void validate(const PrandtlIshlinskii::Params& params) {
                   fmt::format("weights[{}]", j));
     }
   }
-  if (r[0] != 0.0) {
-    throw Error(
-        fmt::format("PI threshold r[0] = {} must be 0 (the r = 0 play carries the linear term)",
-                    r[0]),
-        "thresholds[0]");
-  }
-  for (std::size_t j = 1; j < r.size(); ++j) {
-    if (!(r[j] > r[j - 1])) {
-      throw Error(
-          fmt::format("PI threshold r[{}] = {} must be > r[{}] = {}", j, r[j], j - 1, r[j - 1]),
-          fmt::format("thresholds[{}]", j));
-    }
-  }
+  require_increasing_from_zero(r, "PI threshold", "r", "thresholds",
+                               "the r = 0 play carries the linear term");
   if (!std::isfinite(params.offset)) {
     throw Error(fmt::format("PI offset = {} is not finite", params.offset), "offset");
   }

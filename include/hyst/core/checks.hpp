@@ -22,4 +22,11 @@ void require_same_size(std::size_t a, std::string_view name_a, std::size_t b,
 //! Throws unless the sequence is not empty.
 void require_not_empty(std::size_t size, std::string_view name);
 
+//! Throws unless values[0] = 0 and the values increase strictly, e.g. for `what` "PI threshold",
+//! `symbol` "r": "PI threshold r[0] = 0.1 must be 0 (<why_zero>)", "PI threshold r[2] = 1 must be
+//! > r[1] = 1", about the field "<field>[j]". Empty values pass.
+void require_increasing_from_zero(std::span<const double> values, std::string_view what,
+                                  std::string_view symbol, std::string_view field,
+                                  std::string_view why_zero);
+
 }  // namespace hyst

@@ -129,6 +129,30 @@ ceres::Solver::Summary solve_bounded(const Functor& functor, std::array<double, 
   return summary;
 }
 
+// The engine's options for the bounds [lower, upper] and the engine settings that the fitter's
+// options struct has (those add_multistart_options() describes to users).
+template <std::size_t N, class FitOptions>
+MultistartOptions<N> multistart_options(const std::array<double, N>& lower,
+                                        const std::array<double, N>& upper,
+                                        const FitOptions& options) {
+  MultistartOptions<N> engine;
+  engine.lower = lower;
+  engine.upper = upper;
+  if constexpr (requires { options.global_evaluations; }) {
+    engine.global_evaluations = options.global_evaluations;
+  }
+  if constexpr (requires { options.screening_iterations; }) {
+    engine.screening_iterations = options.screening_iterations;
+  }
+  if constexpr (requires { options.max_iterations; }) {
+    engine.max_iterations = options.max_iterations;
+  }
+  if constexpr (requires { options.function_tolerance; }) {
+    engine.function_tolerance = options.function_tolerance;
+  }
+  return engine;
+}
+
 // Throws hyst::Error when a start is outside its bounds or no start gives a usable solution.
 template <std::size_t N, class Functor>
 MultistartResult<N> multistart_fit(const Functor& functor,
