@@ -32,6 +32,16 @@ void require_not_empty(std::size_t size, std::string_view name) {
   if (size == 0) throw Error(fmt::format("{} is empty", name));
 }
 
+void require_same_length(std::size_t first_size, std::size_t second_size, std::string_view owner,
+                         const ListName& first, const ListName& second) {
+  if (first_size != second_size) {
+    throw Error(fmt::format("{} has {} {} {} but {} {} {}; they must have the same length", owner,
+                            first_size, first.plural, first.symbol, second_size, second.plural,
+                            second.symbol),
+                std::string(second.field));
+  }
+}
+
 void require_increasing_from_zero(std::span<const double> values, std::string_view what,
                                   std::string_view symbol, std::string_view field,
                                   std::string_view why_zero) {

@@ -60,12 +60,8 @@ void validate_free(const GpiParams& params) {
   const auto& r = params.thresholds;
   const auto& p = params.weights;
   if (r.empty()) throw Error("GPI thresholds r is empty (density = free)", "thresholds");
-  if (r.size() != p.size()) {
-    throw Error(fmt::format("GPI has {} thresholds r but {} weights p; they must have the same "
-                            "length",
-                            r.size(), p.size()),
-                "weights");
-  }
+  require_same_length(r.size(), p.size(), "GPI", {"thresholds", "r", "thresholds"},
+                      {"weights", "p", "weights"});
   for (std::size_t j = 0; j < r.size(); ++j) {
     require_finite_field(r[j], fmt::format("threshold r[{}]", j), fmt::format("thresholds[{}]", j));
     require_finite_field(p[j], fmt::format("weight p[{}]", j), fmt::format("weights[{}]", j));

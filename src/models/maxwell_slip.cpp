@@ -15,12 +15,8 @@ void validate(const MaxwellSlip::Params& p) {
   const auto& k = p.stiffness;
   const auto& f = p.break_away;
   if (k.empty()) throw Error("Maxwell-slip stiffness k is empty", "stiffness");
-  if (k.size() != f.size()) {
-    throw Error(fmt::format("Maxwell-slip has {} stiffnesses k but {} break-away forces f; they "
-                            "must have the same length",
-                            k.size(), f.size()),
-                "break_away");
-  }
+  require_same_length(k.size(), f.size(), "Maxwell-slip", {"stiffnesses", "k", "stiffness"},
+                      {"break-away forces", "f", "break_away"});
   for (std::size_t i = 0; i < k.size(); ++i) {
     if (!std::isfinite(k[i]) || !(k[i] > 0.0)) {
       throw Error(fmt::format("Maxwell-slip stiffness k[{}] = {} must be finite and > 0", i, k[i]),

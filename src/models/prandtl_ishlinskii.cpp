@@ -15,12 +15,8 @@ void validate(const PrandtlIshlinskii::Params& params) {
   const auto& r = params.thresholds;
   const auto& p = params.weights;
   if (r.empty()) throw Error("PI thresholds r is empty", "thresholds");
-  if (r.size() != p.size()) {
-    throw Error(fmt::format("PI has {} thresholds r but {} weights p; they must have the same "
-                            "length",
-                            r.size(), p.size()),
-                "weights");
-  }
+  require_same_length(r.size(), p.size(), "PI", {"thresholds", "r", "thresholds"},
+                      {"weights", "p", "weights"});
   for (std::size_t j = 0; j < r.size(); ++j) {
     if (!std::isfinite(r[j])) {
       throw Error(fmt::format("PI threshold r[{}] = {} is not finite", j, r[j]),

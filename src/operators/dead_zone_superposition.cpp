@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
@@ -14,12 +15,8 @@ std::size_t validate(const DeadZoneSuperposition::Params& p) {
   const auto& d = p.thresholds;
   const auto& g = p.weights;
   if (d.empty()) throw Error("dead-zone thresholds d are empty", "thresholds");
-  if (d.size() != g.size()) {
-    throw Error(fmt::format("dead-zone superposition has {} thresholds d but {} weights g; they "
-                            "must have the same length",
-                            d.size(), g.size()),
-                "weights");
-  }
+  require_same_length(d.size(), g.size(), "dead-zone superposition",
+                      {"thresholds", "d", "thresholds"}, {"weights", "g", "weights"});
   std::size_t zero = d.size();
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (!std::isfinite(d[i])) {
