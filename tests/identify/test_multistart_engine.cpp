@@ -1,4 +1,5 @@
-// The multistart engine (src/identify/detail/multistart_fit.hpp): its report, and its global
+// The multistart engine (src/identify/detail/multistart_driver.hpp, multistart_fit.hpp): which
+// runs it continues and keeps, its report, and its global
 // stage (global_stage.hpp) on a cost with
 // many valleys: cost(q) = ((q - 4)^2 + 9 cos^2(2 q)) / 2 on [-5, 10]. Its valleys lie near the
 // zeros of cos(2 q), q = pi/4 + k pi/2, and the deepest is the one closest to 4 (3 pi/4 + pi/2 =
@@ -10,9 +11,11 @@
 #include <cstddef>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "detail/multistart_driver.hpp"
 #include "detail/multistart_fit.hpp"
 
 namespace {
@@ -110,6 +113,81 @@ TEST(MultistartReport, AnInteriorMinimumIsNotDegenerate) {
   const auto result = hyst::detail::multistart_fit(ManyValleys{}, {{0.7}}, o, "test");
   const auto report = hyst::detail::report_of(result, 1.0, 1, "test", "lm");
   EXPECT_EQ(report.status(), "converged");
+}
+
+// The driver's rule (multistart_driver.hpp) on scripted runs: start s screens to cost
+// screened[s], its continuation ends at continued[s]; the expected choices follow by hand.
+struct ScriptedRun {
+  std::size_t start = 0;
+  double cost = 0.0;
+  bool usable = true;
+  bool finished = false;
+  std::size_t iterations = 0;
+};
+
+struct Script {
+  std::vector<double> screened;
+  std::vector<double> continued;
+  std::vector<std::size_t> continued_starts;  // which starts were continued, in order
+
+  hyst::detail::MultistartRuns<ScriptedRun> run(const hyst::detail::MultistartBudget& budget) {
+    return hyst::detail::run_multistart(
+        screened.size(), budget,
+        [&](std::size_t s, std::size_t iterations) {
+          return ScriptedRun{s, screened[s], std::isfinite(screened[s]), false, iterations};
+        },
+        [&](const ScriptedRun& run, std::size_t iterations) {
+          continued_starts.push_back(run.start);
+          return ScriptedRun{run.start, continued[run.start], true, true, iterations};
+        });
+  }
+};
+
+TEST(MultistartDriver, TheBestScreenedRunContinues) {
+  Script script{{3.0, 1.0, NAN, 2.0}, {0.5, 0.9, 0.0, 0.1}, {}};
+  const auto runs = script.run({.screening_iterations = 4, .max_iterations = 50});
+  ASSERT_TRUE(runs.found);
+  EXPECT_EQ(runs.best_start, 1U);  // lowest screened cost; the NaN start is not usable
+  EXPECT_EQ(runs.best.cost, 0.9);  // its continuation, even though start 3's would be lower
+  EXPECT_EQ(script.continued_starts, std::vector<std::size_t>{1});
+  EXPECT_EQ(runs.refining_iterations, 50U);
+  EXPECT_EQ(runs.iterations, 4U * 4 + 50);
+}
+
+TEST(MultistartDriver, SeveralRefinedStartsKeepTheLowestFinalCost) {
+  Script script{{3.0, 1.0, 2.5, 2.0}, {0.5, 0.9, 0.0, 0.1}, {}};
+  const auto runs =
+      script.run({.screening_iterations = 4, .refined_starts = 3, .max_iterations = 50});
+  EXPECT_EQ(script.continued_starts, (std::vector<std::size_t>{1, 3, 2}));
+  EXPECT_EQ(runs.best_start, 2U);
+  EXPECT_EQ(runs.best.cost, 0.0);
+  EXPECT_EQ(runs.iterations, 4U * 4 + 3 * 50);
+}
+
+TEST(MultistartDriver, WithoutScreeningEveryStartRunsInFullAndNoneContinues) {
+  Script script{{3.0, 1.0, 2.5}, {0.5, 0.0, 0.1}, {}};
+  const auto runs = script.run({.screen = false, .max_iterations = 50});
+  EXPECT_TRUE(script.continued_starts.empty());
+  EXPECT_EQ(runs.best_start, 1U);
+  EXPECT_EQ(runs.best.cost, 1.0);
+  EXPECT_EQ(runs.iterations, 3U * 50);
+}
+
+TEST(MultistartDriver, AFinishedRunContinuesOnlyWhenAskedTo) {
+  Script script{{3.0, 1.0}, {0.5, 0.2}, {}};
+  auto finished_solve = [&](std::size_t s, std::size_t iterations) {
+    return ScriptedRun{s, script.screened[s], true, true, iterations};
+  };
+  auto record = [&](const ScriptedRun& run, std::size_t iterations) {
+    script.continued_starts.push_back(run.start);
+    return ScriptedRun{run.start, script.continued[run.start], true, true, iterations};
+  };
+  auto runs = hyst::detail::run_multistart(2, {}, finished_solve, record);
+  EXPECT_TRUE(script.continued_starts.empty());
+  EXPECT_EQ(runs.best.cost, 1.0);
+  runs = hyst::detail::run_multistart(2, {.always_continue = true}, finished_solve, record);
+  EXPECT_EQ(script.continued_starts, std::vector<std::size_t>{1});
+  EXPECT_EQ(runs.best.cost, 0.2);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 #pragma once
 // The multistart rule of every Ceres-based fitter: each start runs a short local solve (the
-// screening); the run of lowest cost continues up to the full iteration budget unless it already
-// ended by its own rule. Without screening (`screen` false), every start runs the full budget and
-// the lowest cost is kept (what suits a neural network's random initialisations, where a short run
-// says little).
+// screening); the `refined_starts` runs of lowest cost (usually 1) continue up to the full
+// iteration budget unless they already ended by their own rule (`always_continue`: even then, for a
+// screening at a lower accuracy than the continuation), and the lowest final cost is kept. Without
+// screening (`screen` false), every start runs the full budget and the lowest cost is kept (what
+// suits a neural network's random initialisations, where a short run says little).
 //
 // The fitter supplies the local solve and the continuation; its run type has the members
 //   double cost;             what the starts are ranked by (lower is better)
@@ -13,16 +14,20 @@
 // multistart_fit.hpp drives bounded fixed-size problems with it, fit_narx.cpp NARX's two-stage
 // training.
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace hyst::detail {
 
 struct MultistartBudget {
   bool screen = true;                     // false: every start runs max_iterations, none continues
   std::size_t screening_iterations = 10;  // per start
-  std::size_t max_iterations = 100;       // of the best start's continuation (0: none)
+  std::size_t refined_starts = 1;         // screened runs that continue (at least 1)
+  std::size_t max_iterations = 100;       // of each continuation (0: none)
+  bool always_continue = false;           // continue runs that ended in the screening too
 };
 
 template <class Run>
@@ -39,22 +44,40 @@ template <class Solve, class Continue>
 auto run_multistart(std::size_t starts, const MultistartBudget& budget, Solve&& solve,
                     Continue&& continue_run) {
   using Run = decltype(solve(std::size_t{0}, std::size_t{0}));
+  struct Screened {
+    Run run;
+    std::size_t start;
+  };
   MultistartRuns<Run> runs;
-  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<Screened> usable;
   for (std::size_t s = 0; s < starts; ++s) {
     Run run = solve(s, budget.screen ? budget.screening_iterations : budget.max_iterations);
     runs.iterations += run.iterations;
-    if (run.usable && run.cost < best_cost) {
-      best_cost = run.cost;
-      runs.best = std::move(run);
-      runs.best_start = s;
-      runs.found = true;
+    if (run.usable && run.cost < std::numeric_limits<double>::infinity()) {
+      usable.push_back({std::move(run), s});
     }
   }
-  if (runs.found && budget.screen && budget.max_iterations > 0 && !runs.best.finished) {
-    runs.best = continue_run(runs.best, budget.max_iterations);
-    runs.refining_iterations = runs.best.iterations;
-    runs.iterations += runs.refining_iterations;
+  if (usable.empty()) return runs;
+  std::stable_sort(usable.begin(), usable.end(),
+                   [](const Screened& x, const Screened& y) { return x.run.cost < y.run.cost; });
+  const std::size_t refined =
+      budget.screen ? std::clamp<std::size_t>(budget.refined_starts, 1, usable.size()) : 1;
+  for (std::size_t i = 0; i < refined; ++i) {
+    Run run = std::move(usable[i].run);
+    std::size_t continued = 0;
+    if (budget.screen && (budget.always_continue || (budget.max_iterations > 0 && !run.finished))) {
+      run = continue_run(run, budget.max_iterations);
+      continued = run.iterations;
+      runs.iterations += continued;
+    }
+    // The first candidate is kept whatever its continuation gave (one refined start: as it
+    // ended); a later one replaces it when usable and lower.
+    if (!runs.found || (run.usable && (!runs.best.usable || run.cost < runs.best.cost))) {
+      runs.best = std::move(run);
+      runs.best_start = usable[i].start;
+      runs.refining_iterations = continued;
+      runs.found = true;
+    }
   }
   return runs;
 }

@@ -8,8 +8,8 @@
 //   std::size_t residuals() const;
 // With `global_evaluations` > 0, a global search of the bounded box (global_stage.hpp) first runs
 // from the start of lowest cost, and its best point is one more start (index starts.size()).
-// Every start runs `screening_iterations`; the best one continues up to `max_iterations`
-// (multistart_driver.hpp).
+// Every start runs `screening_iterations`; the best `refined_starts` (default 1) continue up to
+// `max_iterations`, and the lowest final cost wins (multistart_driver.hpp).
 // Parameters listed in `fixed` are held at their start value.
 // Convergence: the tests of convergence.hpp, the same for every Ceres-based fitter.
 
@@ -41,6 +41,7 @@ struct MultistartOptions {
   std::vector<int> fixed;              // indices held at their start value
   std::size_t global_evaluations = 0;  // cost evaluations of the global stage; 0: none
   std::size_t screening_iterations = 10;
+  std::size_t refined_starts = 1;  // the best this many after screening continue
   std::size_t max_iterations = 100;
   double function_tolerance = kFunctionTolerance;
 };
@@ -144,6 +145,9 @@ MultistartOptions<N> multistart_options(const std::array<double, N>& lower,
   if constexpr (requires { options.screening_iterations; }) {
     engine.screening_iterations = options.screening_iterations;
   }
+  if constexpr (requires { options.refined_starts; }) {
+    engine.refined_starts = options.refined_starts;
+  }
   if constexpr (requires { options.max_iterations; }) {
     engine.max_iterations = options.max_iterations;
   }
@@ -154,10 +158,14 @@ MultistartOptions<N> multistart_options(const std::array<double, N>& lower,
 }
 
 // Throws hyst::Error when a start is outside its bounds or no start gives a usable solution.
-template <std::size_t N, class Functor>
-MultistartResult<N> multistart_fit(const Functor& functor,
+// `screening` computes the start costs, the global stage and the screening iterations; `functor`
+// the continuation of the best starts, which then always runs (a cheaper screening functor, e.g. a
+// coarser integration, with the final iterations at full accuracy). Both: the same residuals.
+template <std::size_t N, class Screening, class Functor>
+MultistartResult<N> multistart_fit(const Screening& screening, const Functor& functor,
                                    const std::vector<std::array<double, N>>& starts,
-                                   const MultistartOptions<N>& options, std::string_view what) {
+                                   const MultistartOptions<N>& options, std::string_view what,
+                                   bool always_refine = true) {
   if (starts.empty()) throw Error(fmt::format("{} fit: no starting point", what), "starts");
   for (std::size_t s = 0; s < starts.size(); ++s) {
     for (std::size_t i = 0; i < N; ++i) {
@@ -176,15 +184,15 @@ MultistartResult<N> multistart_fit(const Functor& functor,
   std::vector<std::array<double, N>> all_starts = starts;
   std::vector<double> start_costs;
   for (const auto& start : starts)
-    start_costs.push_back(least_squares_cost(functor, start));
+    start_costs.push_back(least_squares_cost(screening, start));
   if (options.global_evaluations > 0) {
     std::size_t lowest = 0;
     for (std::size_t s = 1; s < starts.size(); ++s) {
       if (start_costs[s] < start_costs[lowest]) lowest = s;
     }
     std::array<double, N> q = starts[lowest];
-    const auto cost_of = [&functor](const std::array<double, N>& point) {
-      return least_squares_cost(functor, point);
+    const auto cost_of = [&screening](const std::array<double, N>& point) {
+      return least_squares_cost(screening, point);
     };
     const auto global = global_search(cost_of, q, start_costs[lowest], options.lower, options.upper,
                                       options.fixed, options.global_evaluations);
@@ -203,9 +211,10 @@ MultistartResult<N> multistart_fit(const Functor& functor,
     bool finished = false;
     std::size_t iterations = 0;
   };
-  const auto run_from = [&](std::array<double, N> q, double start_cost, std::size_t iterations) {
+  const auto run_from = [&](const auto& residuals, std::array<double, N> q, double start_cost,
+                            std::size_t iterations) {
     BoundedRun run;
-    run.summary = solve_bounded(functor, q, options, iterations);
+    run.summary = solve_bounded(residuals, q, options, iterations);
     run.q = q;
     run.start_cost = start_cost;
     run.cost = run.summary.final_cost;
@@ -218,14 +227,16 @@ MultistartResult<N> multistart_fit(const Functor& functor,
   const auto runs = run_multistart(
       all_starts.size(),
       MultistartBudget{.screening_iterations = options.screening_iterations,
-                       .max_iterations = options.max_iterations},
+                       .refined_starts = options.refined_starts,
+                       .max_iterations = options.max_iterations,
+                       .always_continue = always_refine},
       [&](std::size_t s, std::size_t iterations) {
         // A start whose cost is not finite is not solved from.
         if (!std::isfinite(start_costs[s])) return BoundedRun{};
-        return run_from(all_starts[s], start_costs[s], iterations);
+        return run_from(screening, all_starts[s], start_costs[s], iterations);
       },
       [&](const BoundedRun& best, std::size_t iterations) {
-        return run_from(best.q, best.start_cost, iterations);
+        return run_from(functor, best.q, best.start_cost, iterations);
       });
   if (!runs.found) {
     throw Error(fmt::format("{} fit: Ceres found no usable solution from any of the {} starts",
@@ -249,6 +260,14 @@ MultistartResult<N> multistart_fit(const Functor& functor,
                                    options.upper[i] - result.q[i] <= 1e-6 * width);
   }
   return result;
+}
+
+// One functor for every stage.
+template <std::size_t N, class Functor>
+MultistartResult<N> multistart_fit(const Functor& functor,
+                                   const std::vector<std::array<double, N>>& starts,
+                                   const MultistartOptions<N>& options, std::string_view what) {
+  return multistart_fit(functor, functor, starts, options, what, false);
 }
 
 // Starting points divided by the parameter scale (the fitters iterate q = physical / scale).
