@@ -18,6 +18,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/identify/data_split.hpp"
+#include "hyst/identify/fit_record.hpp"
 
 namespace hyst {
 namespace {
@@ -72,12 +73,7 @@ void validate_options(const NarxFitOptions& o) {
 
 void validate_record(std::span<const double> input, std::span<const double> output,
                      std::string_view kind) {
-  const auto input_name = fmt::format("NARX fit {}input", kind);
-  const auto output_name = fmt::format("NARX fit {}output", kind);
-  require_same_size(input.size(), input_name, output.size(), output_name);
-  require_not_empty(input.size(), input_name);
-  require_finite(input, input_name);
-  require_finite(output, output_name);
+  check_fit_record({input, output}, fmt::format("NARX fit{}", kind), {});
 }
 
 // The model structure with all network values 0: regressor layout and normalisation only.
@@ -782,7 +778,7 @@ NarxFit fit_narx(std::span<const double> input, std::span<const double> output,
                  std::span<const double> validation_output, const NarxFitOptions& options) {
   validate_options(options);
   validate_record(input, output, "");
-  validate_record(validation_input, validation_output, "validation ");
+  validate_record(validation_input, validation_output, " validation");
   if (options.validate_fraction != 0.0) {
     throw Error(fmt::format("NARX fit: validate_fraction = {} must be 0 with a separate "
                             "validation record",

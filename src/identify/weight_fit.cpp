@@ -6,6 +6,7 @@
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/identify/data_split.hpp"
+#include "hyst/identify/fit_record.hpp"
 
 namespace hyst::detail {
 
@@ -16,12 +17,7 @@ double range_of(std::span<const double> samples) {
 
 RecordParts split_record(std::span<const double> input, std::span<const double> output,
                          double validate_fraction, std::string_view who, std::size_t unknowns) {
-  const auto input_name = fmt::format("{} input", who);
-  const auto output_name = fmt::format("{} output", who);
-  require_same_size(input.size(), input_name, output.size(), output_name);
-  require_not_empty(input.size(), input_name);
-  require_finite(input, input_name);
-  require_finite(output, output_name);
+  check_fit_record({input, output}, who, {});
   DataSplit split;
   try {
     split = split_by_fraction(input.size(), validate_fraction);
