@@ -9,6 +9,7 @@
 #include "../core/detail/enum_names.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/operators/play.hpp"
 
 namespace hyst {
 namespace {
@@ -174,25 +175,9 @@ typename GeneralizedPrandtlIshlinskii<E>::State GeneralizedPrandtlIshlinskii<E>:
 template <Envelope E>
 typename GeneralizedPrandtlIshlinskii<E>::State GeneralizedPrandtlIshlinskii<E>::make_state(
     std::vector<double> play) const {
-  require_same_size(play.size(), "GPI state z", size(), "GPI thresholds r");
-  for (std::size_t j = 0; j < play.size(); ++j)
-    require_finite(play[j], fmt::format("GPI state z[{}]", j));
-  // Every step applies the same clamp max(a - r_j, min(b + r_j, .)) to all operators, which
-  // keeps |z_i - z_j| <= |r_i - r_j|; states breaking it are unreachable (and the inverse could
-  // not be started consistently from them). A relative slack absorbs rounding.
-  double scale = 1.0;
-  for (double z : play)
-    scale = std::max(scale, std::abs(z));
-  const double slack = 1e-12 * scale;
-  for (std::size_t j = 1; j < play.size(); ++j) {
-    const double gap = std::abs(play[j] - play[j - 1]);
-    if (gap > thresholds_[j] - thresholds_[j - 1] + slack) {
-      throw Error(fmt::format(
-          "GPI state z[{}] = {} and z[{}] = {} differ by {}, more than "
-          "r[{}] - r[{}] = {}: no input history reaches this state",
-          j, play[j], j - 1, play[j - 1], gap, j, j - 1, thresholds_[j] - thresholds_[j - 1]));
-    }
-  }
+  // Every step applies the same clamp max(a - r_j, min(b + r_j, .)) to all operators; states
+  // breaking the bound are unreachable (and the inverse could not be started from them).
+  require_reachable_plays(play, thresholds_, "GPI", "z");
   return State{std::move(play)};
 }
 

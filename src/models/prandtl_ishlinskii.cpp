@@ -7,6 +7,7 @@
 
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/operators/play.hpp"
 
 namespace hyst {
 namespace {
@@ -50,27 +51,7 @@ PrandtlIshlinskii::State PrandtlIshlinskii::state_at_rest(double input) const {
 }
 
 PrandtlIshlinskii::State PrandtlIshlinskii::make_state(std::vector<double> play) const {
-  const auto& r = params_.thresholds;
-  require_same_size(play.size(), "PI state w", r.size(), "PI thresholds r");
-  for (std::size_t j = 0; j < play.size(); ++j) {
-    require_finite(play[j], fmt::format("PI state w[{}]", j));
-  }
-  // Reachable states: neighbouring plays differ by at most the difference of their thresholds
-  // (this implies the condition for every pair). A relative slack absorbs rounding in states
-  // that were computed by running an input history.
-  double scale = 1.0;
-  for (double w : play)
-    scale = std::max(scale, std::abs(w));
-  const double slack = 1e-12 * scale;
-  for (std::size_t j = 1; j < play.size(); ++j) {
-    const double gap = std::abs(play[j] - play[j - 1]);
-    if (gap > r[j] - r[j - 1] + slack) {
-      throw Error(
-          fmt::format("PI state w[{}] = {} and w[{}] = {} differ by {}, more than "
-                      "r[{}] - r[{}] = {}: no input history reaches this state",
-                      j, play[j], j - 1, play[j - 1], gap, j, j - 1, r[j] - r[j - 1]));
-    }
-  }
+  require_reachable_plays(play, params_.thresholds, "PI", "w");
   return State{std::move(play)};
 }
 

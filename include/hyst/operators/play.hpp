@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <string_view>
 
 #include "hyst/core/assert.hpp"
 
@@ -22,6 +24,15 @@ namespace hyst {
 inline double play_step(double input, double half_width, double previous) noexcept {
   return std::max(input - half_width, std::min(input + half_width, previous));
 }
+
+//! Throws hyst::Error unless a bank of plays with half-widths `thresholds` (increasing) can reach
+//! the outputs `play` from some input history: finite values, one per play, neighbours differing
+//! by at most the difference of their thresholds (which implies it for every pair; a relative
+//! slack of 1e-12 absorbs rounding in states computed by running a history). Messages name the
+//! model and the state's symbol, e.g. "PI", "w": "PI state w[2] = 1.5 and w[1] = 0 differ by 1.5,
+//! more than r[2] - r[1] = 0.4: no input history reaches this state".
+void require_reachable_plays(std::span<const double> play, std::span<const double> thresholds,
+                             std::string_view model, std::string_view symbol);
 
 class Play {
  public:
