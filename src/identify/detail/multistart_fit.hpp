@@ -8,7 +8,8 @@
 //   std::size_t residuals() const;
 // With `global_evaluations` > 0, a global search of the bounded box (global_stage.hpp) first runs
 // from the start of lowest cost, and its best point is one more start (index starts.size()).
-// Every start runs `screening_iterations`; the best one continues up to `max_iterations`.
+// Every start runs `screening_iterations`; the best `refined_starts` (default 1) continue up to
+// `max_iterations`, and the lowest final cost wins.
 // Parameters listed in `fixed` are held at their start value.
 // Convergence: the tests of convergence.hpp, the same for every Ceres-based fitter.
 
@@ -39,6 +40,7 @@ struct MultistartOptions {
   std::vector<int> fixed;              // indices held at their start value
   std::size_t global_evaluations = 0;  // cost evaluations of the global stage; 0: none
   std::size_t screening_iterations = 10;
+  std::size_t refined_starts = 1;  // the best this many after screening continue
   std::size_t max_iterations = 100;
   double function_tolerance = kFunctionTolerance;
 };
@@ -128,10 +130,14 @@ ceres::Solver::Summary solve_bounded(const Functor& functor, std::array<double, 
 }
 
 // Throws hyst::Error when a start is outside its bounds or no start gives a usable solution.
-template <std::size_t N, class Functor>
-MultistartResult<N> multistart_fit(const Functor& functor,
+// `screening` computes the start costs, the global stage and the screening iterations; `functor`
+// the refinement of the best start, which then always runs (a cheaper screening functor, e.g. a
+// coarser integration, with the final iterations at full accuracy). Both: the same residuals.
+template <std::size_t N, class Screening, class Functor>
+MultistartResult<N> multistart_fit(const Screening& screening, const Functor& functor,
                                    const std::vector<std::array<double, N>>& starts,
-                                   const MultistartOptions<N>& options, std::string_view what) {
+                                   const MultistartOptions<N>& options, std::string_view what,
+                                   bool always_refine = true) {
   if (starts.empty()) throw Error(fmt::format("{} fit: no starting point", what), "starts");
   for (std::size_t s = 0; s < starts.size(); ++s) {
     for (std::size_t i = 0; i < N; ++i) {
@@ -150,15 +156,15 @@ MultistartResult<N> multistart_fit(const Functor& functor,
   std::vector<std::array<double, N>> all_starts = starts;
   std::vector<double> start_costs;
   for (const auto& start : starts)
-    start_costs.push_back(least_squares_cost(functor, start));
+    start_costs.push_back(least_squares_cost(screening, start));
   if (options.global_evaluations > 0) {
     std::size_t lowest = 0;
     for (std::size_t s = 1; s < starts.size(); ++s) {
       if (start_costs[s] < start_costs[lowest]) lowest = s;
     }
     std::array<double, N> q = starts[lowest];
-    const auto cost_of = [&functor](const std::array<double, N>& point) {
-      return least_squares_cost(functor, point);
+    const auto cost_of = [&screening](const std::array<double, N>& point) {
+      return least_squares_cost(screening, point);
     };
     const auto global = global_search(cost_of, q, start_costs[lowest], options.lower, options.upper,
                                       options.fixed, options.global_evaluations);
@@ -167,33 +173,58 @@ MultistartResult<N> multistart_fit(const Functor& functor,
       start_costs.push_back(global.cost);
     }
   }
+  struct Screened {
+    double cost;
+    std::size_t start;
+    std::array<double, N> q;
+    ceres::Solver::Summary summary;
+  };
   MultistartResult<N> result;
-  double best_cost = std::numeric_limits<double>::infinity();
-  ceres::Solver::Summary best_summary;
+  std::vector<Screened> screened;
   for (std::size_t s = 0; s < all_starts.size(); ++s) {
     std::array<double, N> q = all_starts[s];
-    const double start_cost = start_costs[s];
-    if (!std::isfinite(start_cost)) continue;
-    const auto summary = solve_bounded(functor, q, options, options.screening_iterations);
+    if (!std::isfinite(start_costs[s])) continue;
+    const auto summary = solve_bounded(screening, q, options, options.screening_iterations);
     result.iterations +=
         static_cast<std::size_t>(summary.num_successful_steps + summary.num_unsuccessful_steps);
-    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
+    if (summary.IsSolutionUsable()) screened.push_back({summary.final_cost, s, q, summary});
+  }
+  if (screened.empty()) {
+    throw Error(fmt::format("{} fit: Ceres found no usable solution from any of the {} starts",
+                            what, starts.size()));
+  }
+  std::stable_sort(screened.begin(), screened.end(),
+                   [](const Screened& x, const Screened& y) { return x.cost < y.cost; });
+  // The best `refined_starts` continue; the lowest final cost wins.
+  double best_cost = std::numeric_limits<double>::infinity();
+  ceres::Solver::Summary best_summary;
+  const std::size_t refined =
+      std::min(std::max<std::size_t>(options.refined_starts, 1), screened.size());
+  for (std::size_t i = 0; i < refined; ++i) {
+    Screened candidate = screened[i];
+    auto summary = candidate.summary;
+    if (options.max_iterations > 0 &&
+        (always_refine || summary.termination_type == ceres::NO_CONVERGENCE)) {
+      summary = solve_bounded(functor, candidate.q, options, options.max_iterations);
+      const auto steps =
+          static_cast<std::size_t>(summary.num_successful_steps + summary.num_unsuccessful_steps);
+      result.iterations += steps;
+      if (!summary.IsSolutionUsable()) continue;
+      if (summary.final_cost < best_cost) result.refining_iterations = steps;
+    } else if (always_refine) {  // no refinement: the cost of the functor itself
+      summary.final_cost = least_squares_cost(functor, candidate.q);
+    }
+    if (summary.final_cost < best_cost) {
       best_cost = summary.final_cost;
-      result.best_start = s;
-      result.initial_cost = start_cost;
-      result.q = q;
       best_summary = summary;
+      result.best_start = candidate.start;
+      result.initial_cost = start_costs[candidate.start];
+      result.q = candidate.q;
     }
   }
   if (!std::isfinite(best_cost)) {
     throw Error(fmt::format("{} fit: Ceres found no usable solution from any of the {} starts",
                             what, starts.size()));
-  }
-  if (options.max_iterations > 0 && best_summary.termination_type == ceres::NO_CONVERGENCE) {
-    best_summary = solve_bounded(functor, result.q, options, options.max_iterations);
-    result.refining_iterations = static_cast<std::size_t>(best_summary.num_successful_steps +
-                                                          best_summary.num_unsuccessful_steps);
-    result.iterations += result.refining_iterations;
   }
   result.termination = termination_of_ceres(best_summary);
   result.message = best_summary.message;
@@ -206,6 +237,14 @@ MultistartResult<N> multistart_fit(const Functor& functor,
                                    options.upper[i] - result.q[i] <= 1e-6 * width);
   }
   return result;
+}
+
+// One functor for every stage.
+template <std::size_t N, class Functor>
+MultistartResult<N> multistart_fit(const Functor& functor,
+                                   const std::vector<std::array<double, N>>& starts,
+                                   const MultistartOptions<N>& options, std::string_view what) {
+  return multistart_fit(functor, functor, starts, options, what, false);
 }
 
 // Starting points divided by the parameter scale (the fitters iterate q = physical / scale).
