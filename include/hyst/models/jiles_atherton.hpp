@@ -151,11 +151,15 @@ struct JilesAthertonCoefficients {
   T ms, a, k, c, alpha;
 };
 
-//! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k.
+//! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k; `clamped` (when not
+//! null) tells whether the bound acted.
 template <class T>
-inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
+inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta,
+                        bool* clamped = nullptr) {
   T d = delta * k - alpha * x;
-  if (delta * d < 1e-3 * k) d = delta * 1e-3 * k;
+  const bool low = delta * d < 1e-3 * k;
+  if (low) d = delta * 1e-3 * k;
+  if (clamped) *clamped = low;
   return d;
 }
 
@@ -217,7 +221,7 @@ inline void ja_integrate(std::array<T, 1>& x, double dh, const JaIntegration& in
 }
 
 //! Advances (M, M_irr) from field h0 by dh as `integration` says. The right-hand sides report
-//! their regime (delta_M on, slope clipped) for the step control.
+//! their regime (delta_M on, denominator bounded, slope clipped) for the step control.
 template <class T>
 inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
                        double h0, double dh, const JaIntegration& integration, T& m, T& m_irr) {
@@ -229,9 +233,12 @@ inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVaria
       const double h = h0 + tau * dh;
       const T mt = ja_total_magnetisation(p, inv_a, h, s[0], m_guess);
       const T diff = p.ms * langevin((h + p.alpha * mt) * inv_a) - s[0];
-      regime = delta * diff > 0.0 ? 1 : 0;
-      if (regime == 0) return std::array<T, 1>{T(0.0)};
-      return std::array<T, 1>{diff / ja_denominator(p.k, p.alpha, diff, delta)};
+      regime = 0;
+      if (!(delta * diff > 0.0)) return std::array<T, 1>{T(0.0)};
+      bool clamped = false;
+      const T slope = diff / ja_denominator(p.k, p.alpha, diff, delta, &clamped);
+      regime = clamped ? 2 : 1;
+      return std::array<T, 1>{slope};
     };
     std::array<T, 1> x{m_irr};
     ja_integrate(x, dh, integration, rhs);
@@ -252,10 +259,12 @@ inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVaria
         n += diff;
         regime = 1;
       }
-      T slope = n / ja_denominator(p.k, p.alpha, n, delta);
+      bool clamped = false;
+      T slope = n / ja_denominator(p.k, p.alpha, n, delta, &clamped);
+      if (clamped) regime += 2;
       if (slope < 0.0) {
         slope = T(0.0);
-        regime += 2;
+        regime += 4;
       }
       return std::array<T, 1>{slope};
     };
