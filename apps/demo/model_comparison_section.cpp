@@ -108,24 +108,9 @@ std::vector<DataSet> read_data_sets(const fs::path& data_dir) {
   return sets;
 }
 
-// The Jiles-Atherton fit simulates about 10 us per sample and iterates a few hundred times from
-// several starts: minutes on a record of a thousand samples or more, so it is left out there.
-constexpr std::size_t kLongRecord = 1000;
-constexpr const char* kSlowOnLongRecords = "jiles_atherton";
-
 std::string compare_one(const DataSet& set, const fs::path& folder) {
   fs::create_directories(folder);
-  hyst::CompareOptions options;
-  std::string left_out;
-  if (set.input.size() > kLongRecord) {
-    for (const auto& entry : hyst::ModelRegistry::builtin().entries()) {
-      if (entry.can_fit() && entry.name != kSlowOnLongRecords) options.models.push_back(entry.name);
-    }
-    left_out = fmt::format(
-        "`{}` is left out on this record of more than {} samples (its fit "
-        "takes minutes there).\n\n",
-        kSlowOnLongRecords, kLongRecord);
-  }
+  const hyst::CompareOptions options;
   const auto comparison = hyst::compare_models(set.input, set.output, options);
   const auto markdown = hyst::model_comparison_markdown(comparison);
   hyst::io::write_file_atomically(folder / "ranking.md", markdown);
@@ -142,8 +127,8 @@ std::string compare_one(const DataSet& set, const fs::path& folder) {
   } catch (const hyst::Error& error) {
     figures = fmt::format("(no plots: {})\n\n", error.what());
   }
-  return fmt::format("### {}\n\n{} ({} samples).\n\n{}{}\n{}", set.name, set.description,
-                     set.input.size(), left_out, markdown, figures);
+  return fmt::format("### {}\n\n{} ({} samples).\n\n{}\n{}", set.name, set.description,
+                     set.input.size(), markdown, figures);
 }
 
 // One ranking on separate records, written to `folder` (ranking.md, ranking.csv); returns its
@@ -234,10 +219,7 @@ std::string every_other_forc(const fs::path& data_dir, const fs::path& folder) {
     record.input.insert(record.input.end(), curve.field.begin(), curve.field.end());
     record.output.insert(record.output.end(), curve.moment.begin(), curve.moment.end());
   }
-  hyst::CrossRecordOptions options;  // start rest: the calibration point saturates the state
-  for (const auto& entry : hyst::ModelRegistry::builtin().entries()) {
-    if (entry.can_fit() && entry.name != kSlowOnLongRecords) options.models.push_back(entry.name);
-  }
+  const hyst::CrossRecordOptions options;  // start rest: the calibration point saturates the state
   return cross_record_ranking(
       "every other FORC",
       fmt::format(
@@ -245,9 +227,8 @@ std::string every_other_forc(const fs::path& data_dir, const fs::path& folder) {
           "the {} curves, each after the drift-calibration point measured before it near "
           "saturation; every model with its default options fitted on the even-numbered "
           "curves joined ({} samples), ranked on the odd-numbered ones joined ({} samples), "
-          "predicted from rest (each curve's calibration point saturates the state). `{}` is "
-          "left out (its fit takes minutes on thousands of samples).",
-          file.curves.size(), even.input.size(), odd.input.size(), kSlowOnLongRecords),
+          "predicted from rest (each curve's calibration point saturates the state).",
+          file.curves.size(), even.input.size(), odd.input.size()),
       {even}, {odd}, options, folder);
 }
 

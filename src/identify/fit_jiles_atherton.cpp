@@ -17,6 +17,10 @@ namespace {
 
 constexpr std::size_t kJaParameters = 5;  // M_s, a, k, c, alpha
 using JaVector = std::array<double, kJaParameters>;
+// Step error (relative to M_s) of the simulations that only rank parameter sets (start costs,
+// global stage, screening): 100 times the model's default, i.e. loops within ~1e-5 M_s, far below
+// any measured misfit; the refinement runs at the model's default.
+constexpr double kScreeningStepError = 100.0 * JilesAtherton::default_step_error;
 
 using detail::value_of;
 // Forward-mode derivatives for the simulation inside the fit: a value and its N partial
@@ -140,14 +144,15 @@ JaVector physical_of(const JilesAtherton::Params& p) {
 // Steady-state loop in any scalar type; writes one B per sample when `out` is not null.
 template <class T>
 void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
-              std::span<const double> field, double max_step, bool periodic, T* out) {
+              std::span<const double> field, const detail::JaIntegration& integration,
+              bool periodic, T* out) {
   T m(0.0);
   T m_irr(0.0);
   double h = 0.0;
   auto advance = [&](double target) {
     const double dh = target - h;
     if (dh != 0.0) {
-      detail::ja_advance(p, variant, h, dh, detail::field_substeps(dh, max_step), m, m_irr);
+      detail::ja_advance(p, variant, h, dh, integration, m, m_irr);
       h = target;
     }
   };
@@ -165,11 +170,12 @@ void run_loop(const detail::JilesAthertonCoefficients<T>& p, JilesAthertonVarian
 class LoopError {
  public:
   LoopError(std::span<const BhLoop> loops, JaVector scale, JilesAthertonVariant variant,
-            double max_step, double b_scale, bool periodic)
+            double max_step, double step_error, double b_scale, bool periodic)
       : loops_(loops.begin(), loops.end()),
         scale_(scale),
         variant_(variant),
         max_step_(max_step),
+        step_error_(step_error),
         b_scale_(b_scale),
         periodic_(periodic) {
     for (const auto& loop : loops_)
@@ -209,11 +215,16 @@ class LoopError {
   bool evaluate(const detail::JilesAthertonCoefficients<T>& p, T* residuals) const {
     if (!(p.ms > 0.0 && p.a > 0.0 && p.k > 0.0)) return false;
     if (!(p.alpha * p.ms / (3.0 * p.a) < 0.99)) return false;
-    // dM/dH ~ 1/k: the RK4 step must stay well below k, or the integration turns unstable.
-    const double max_step = std::min(max_step_, value_of(p.k) / 20.0);
+    JilesAtherton::Params values;
+    values.ms = value_of(p.ms);
+    values.k = value_of(p.k);
+    // dM/dH ~ 1/k: a fixed RK4 step must stay well below k, or the integration turns unstable.
+    if (max_step_ > 0.0) values.max_field_step = std::min(max_step_, values.k / 20.0);
+    auto integration = JilesAtherton::integration_of(values);
+    integration.step_error = step_error_ * values.ms;
     std::size_t r = 0;
     for (const auto& loop : loops_) {
-      run_loop(p, variant_, loop.input, max_step, periodic_, residuals + r);
+      run_loop(p, variant_, loop.input, integration, periodic_, residuals + r);
       for (std::size_t k = 0; k < loop.input.size(); ++k, ++r) {
         residuals[r] = (residuals[r] - loop.output[k]) / b_scale_;
         if (!std::isfinite(value_of(residuals[r]))) return false;
@@ -227,6 +238,7 @@ class LoopError {
   JaVector scale_;
   JilesAthertonVariant variant_;
   double max_step_;
+  double step_error_;  // of the controlled RK4 steps, relative to M_s
   double b_scale_;
   bool periodic_;
   std::size_t residuals_ = 0;
@@ -271,8 +283,7 @@ std::vector<double> simulate_bh_loop(const JilesAtherton& model, std::span<const
   const auto& p = model.params();
   const detail::JilesAthertonCoefficients<double> c{p.ms, p.a, p.k, p.c, p.alpha};
   std::vector<double> b(field.size());
-  run_loop(c, p.variant, field, p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0, periodic,
-           b.data());
+  run_loop(c, p.variant, field, model.integration(), periodic, b.data());
   return b;
 }
 
@@ -337,12 +348,9 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
     check_loop(loops[i], "loops", i);
   for (std::size_t i = 0; i < validation.size(); ++i)
     check_loop(validation[i], "validation", i);
-  double span = 0.0;
   double b_sum = 0.0;
   std::size_t count = 0;
   for (const auto& loop : loops) {
-    const auto [lo, hi] = std::minmax_element(loop.input.begin(), loop.input.end());
-    span = std::max(span, *hi - *lo);
     for (double b : loop.output) {
       b_sum += b * b;
       ++count;
@@ -350,7 +358,7 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   }
   const double b_scale = std::sqrt(b_sum / static_cast<double>(count));
   if (!(b_scale > 0.0)) throw Error("Jiles-Atherton fit: B is zero", "output");
-  const double max_step = options.max_field_step > 0.0 ? options.max_field_step : span / 2000.0;
+  const double max_step = options.max_field_step;
 
   auto starts = options.starts;
   if (starts.empty()) starts = jiles_atherton_starts(loops.front(), options.variant);
@@ -361,19 +369,17 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   const JaVector first = physical_of(starts.front());
   JaVector scale{first[0], first[1], first[2], 1.0,
                  first[4] > 0.0 ? first[4] : first[1] / first[0]};
-  detail::MultistartOptions<kJaParameters> ms;
-  ms.lower = {0.1, 1e-3, 0.05, 0.0, 0.0};
-  ms.upper = {10.0, 1e3, 1e3, 0.99, 1e3};
-  ms.global_evaluations = options.global_evaluations;
-  ms.screening_iterations = options.screening_iterations;
-  ms.max_iterations = options.max_iterations;
-  ms.function_tolerance = options.function_tolerance;
+  const auto ms = detail::multistart_options<kJaParameters>({0.1, 1e-3, 0.05, 0.0, 0.0},
+                                                            {10.0, 1e3, 1e3, 0.99, 1e3}, options);
   std::vector<JaVector> physical_starts;
   for (const auto& start : starts)
     physical_starts.push_back(physical_of(start));
   const auto q_starts = detail::scaled_starts(physical_starts, scale);
-  const LoopError functor(loops, scale, options.variant, max_step, b_scale, options.periodic);
-  const auto result = detail::multistart_fit(functor, q_starts, ms, "Jiles-Atherton");
+  const LoopError functor(loops, scale, options.variant, max_step,
+                          JilesAtherton::default_step_error, b_scale, options.periodic);
+  const LoopError screening(loops, scale, options.variant, max_step, kScreeningStepError, b_scale,
+                            options.periodic);
+  const auto result = detail::multistart_fit(screening, functor, q_starts, ms, "Jiles-Atherton");
 
   JilesAtherton::Params fitted;
   fitted.ms = result.q[0] * scale[0];
@@ -382,7 +388,7 @@ JilesAthertonFit fit_jiles_atherton(std::span<const BhLoop> loops,
   fitted.c = result.q[3] * scale[3];
   fitted.alpha = result.q[4] * scale[4];
   fitted.variant = options.variant;
-  fitted.max_field_step = std::min(max_step, fitted.k / 20.0);
+  if (max_step > 0.0) fitted.max_field_step = std::min(max_step, fitted.k / 20.0);
   JilesAtherton model(fitted);
 
   FitReport report =

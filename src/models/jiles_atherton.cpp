@@ -33,7 +33,7 @@ JilesAtherton::JilesAtherton(Params params) : params_(params) {
   rules.at_least(params_.max_field_step, 0.0, "max_field_step", "max_field_step");
   rules.integration_tolerance(params_.tolerance);
   coefficients_ = {params_.ms, params_.a, params_.k, params_.c, params_.alpha};
-  max_step_ = params_.max_field_step > 0.0 ? params_.max_field_step : params_.k / 50.0;
+  integration_ = integration_of(params_);
 }
 
 JilesAtherton::State JilesAtherton::state_at(double field, double magnetisation) const {

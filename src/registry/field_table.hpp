@@ -320,6 +320,10 @@ FieldTable<O> add_multistart_options(FieldTable<O> table) {
     table.add("screening_iterations", &O::screening_iterations, "",
               "iterations of every start before the best one goes on");
   }
+  if constexpr (requires { &O::refined_starts; }) {
+    table.add("refined_starts", &O::refined_starts, "",
+              "screened starts that go on; the lowest final cost is kept");
+  }
   if constexpr (requires { &O::function_tolerance; }) {
     table.add("function_tolerance", &O::function_tolerance, "",
               "relative cost change that ends the fit");

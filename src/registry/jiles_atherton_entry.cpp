@@ -22,7 +22,8 @@ struct JilesAthertonCodec : CodecOf<JilesAtherton, "jiles_atherton"> {
         .add("alpha", &P::alpha, "-", "coupling >= 0, alpha M_s / (3 a) < 1")
         .add("variant", &P::variant, jiles_atherton_variant_from_string,
              "original or venkataraman (COMSOL, Altair Flux)", Presence::optional)
-        .add("max_field_step", &P::max_field_step, "A/m", "largest RK4 step in H, 0 = k / 50",
+        .add("max_field_step", &P::max_field_step, "A/m",
+             "> 0: fixed RK4 steps in H of at most this; 0 = RK4 under error control",
              Presence::optional)
         .add("tolerance", &P::tolerance, "A/m",
              "> 0: adaptive Dormand-Prince with this error tolerance", Presence::optional);
@@ -55,8 +56,10 @@ struct JilesAthertonCodec : CodecOf<JilesAtherton, "jiles_atherton"> {
         to_string(p.variant), p.ms, p.a, p.k, p.c, p.alpha,
         p.tolerance > 0.0
             ? fmt::format("adaptive Dormand-Prince in H, tolerance {} A/m", p.tolerance)
-            : fmt::format("RK4 in H with steps <= {} A/m",
-                          p.max_field_step > 0.0 ? p.max_field_step : p.k / 50.0));
+        : p.max_field_step > 0.0
+            ? fmt::format("RK4 in H with steps <= {} A/m", p.max_field_step)
+            : fmt::format("RK4 in H under error control, error estimate <= {} A/m per step",
+                          JilesAtherton::default_step_error * p.ms));
   }
   static bool has_inverse(const Model&) { return true; }  // dB/dH >= mu0 > 0
   static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
@@ -99,7 +102,8 @@ FieldTable<JilesAthertonFitOptions> jiles_atherton_fit_option_table() {
           .add("periodic", &O::periodic, "",
                "the same as initial_state = periodic (true) or demagnetised (false)")
           .add("max_field_step", &O::max_field_step, "A/m",
-               "largest RK4 step in H while fitting, 0 = peak-to-peak field / 2000")
+               "> 0: fixed RK4 steps in H of at most min(this, k / 20) while fitting; 0 = RK4 "
+               "under error control")
           .add("starts", &O::starts, parameter_table<JilesAthertonCodec>(),
                "starting points {ms, a, k, c, alpha}; default: derived from the data"));
 }

@@ -33,7 +33,7 @@ TEST(FitJilesAtherton, RecoversKnownParametersFromSimulatedLoops) {
     truth.alpha = 4e-4;
     truth.variant = variant;
     const auto h = loop_field(3000.0, 200);
-    truth.max_field_step = 6000.0 / 2000.0;  // the fit's default step for this loop
+    truth.max_field_step = 6000.0 / 2000.0;  // fixed k / 67 steps: not the fit's integration
     const auto b = simulate_bh_loop(JilesAtherton(truth), h);
     const BhLoop loop{h, b};
     JilesAthertonFitOptions options;

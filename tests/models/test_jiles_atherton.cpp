@@ -93,7 +93,7 @@ TEST(JilesAtherton, NoBlowUpAtHighDrive) {
 TEST(JilesAtherton, ConvergesToFineStepReferenceAndIsRateIndependent) {
   for (auto variant : kVariants) {
     auto p = params(variant);
-    const JilesAtherton model(p);  // step k / 50 = 8 A/m
+    const JilesAtherton model(p);  // the default integration (RK4 under error control)
     p.max_field_step = 0.5;
     const JilesAtherton fine(p);
     auto s = model.initial_state(), sf = fine.initial_state(), slow = model.initial_state();

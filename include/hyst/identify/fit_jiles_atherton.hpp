@@ -8,16 +8,20 @@
 //!
 //! Each loop is simulated in steady state: from the demagnetised state the field rises to the
 //! loop's first sample, the loop is run once (warm-up), and the residuals are taken on the second
-//! pass (a measured loop is one period of a periodic excitation). The sub-step in H is
-//! min(max_field_step, k / 20), max_field_step by default the largest loop's peak-to-peak field /
-//! 2000 (dM/dH ~ 1/k: larger steps make RK4 unstable for small k); the returned model keeps it.
+//! pass (a measured loop is one period of a periodic excitation). Integration: by default the
+//! model's own (RK4 under error control, jiles_atherton.hpp); the start costs, the global stage
+//! and the screening rank parameter sets with a 100 times larger step error, the refinement runs
+//! at the model's. With max_field_step > 0: fixed RK4 steps of min(max_field_step, k / 20)
+//! (dM/dH ~ 1/k: larger steps make RK4 unstable for small k), which the returned model keeps.
 //!
 //! Method: Levenberg-Marquardt (Ceres, dense QR) with automatic derivatives through the RK4
 //! integration (forward mode: the simulation runs in inlined dual numbers, copied into Ceres' Jets;
-//! the values are those of the double simulation), parameters scaled by the first start. Starts
+//! the values are those of the double simulation; the step sizes follow from the values, so the
+//! derivatives are those of the discrete map), parameters scaled by the first start. Starts
 //! (from the data): M_s = 1.1 max(B/mu0 - H); k = the coercive field H_c (where B crosses 0); a in
 //! {H_c, 3 H_c}; c in {0.2, 0.8}; alpha = 0 and alpha = a / M_s. Candidate steps with alpha M_s /
-//! (3 a) >= 0.99 are rejected. report.termination is Ceres' own verdict.
+//! (3 a) >= 0.99 are rejected. Every start runs screening_iterations; the best refined_starts
+//! continue, the lowest final cost wins. report.termination is Ceres' own verdict.
 
 #include <cstddef>
 #include <span>
@@ -36,12 +40,15 @@ using BhLoop = FitRecord;
 struct JilesAthertonFitOptions {
   JilesAthertonVariant variant = JilesAthertonVariant::original;
   std::vector<JilesAtherton::Params> starts;  //!< empty = the data-derived starts
-  double max_field_step = 0.0;                //!< [A/m]; 0 = peak-to-peak field / 2000
+  double max_field_step = 0.0;                //!< [A/m]; 0 = RK4 under error control
   //! Cost evaluations of the global stage (NLopt CRS2-LM over the bounded box) before the
   //! local starts; its best point is one more start. 0 (default, since every evaluation
   //! simulates every loop): the data-derived starts only.
   std::size_t global_evaluations = 0;
   std::size_t screening_iterations = 8;
+  //! The best this many starts after screening continue up to max_iterations; the lowest final
+  //! cost wins (the cost has several valleys, e.g. c near 0 and near 1 on the amorphous loop).
+  std::size_t refined_starts = 3;
   std::size_t max_iterations = 2000;
   double function_tolerance = 1e-9;
   //! true: every loop is one period in steady state (file comment); false: every record starts

@@ -27,12 +27,17 @@
 //! to >= 0. Parameters: M_s [A/m] > 0, a [A/m] > 0, k [A/m] > 0, c in [0, 1), alpha >= 0 with
 //! alpha M_s / (3 a) < 1 (a single-valued anhysteretic curve).
 //!
-//! Integration: rate independent, integrated in H; any H(t), minor loops included. With
-//! `tolerance` > 0 adaptively by Boost.Odeint's Dormand-Prince 5(4) with that absolute and relative
-//! error tolerance per step (in A/m for M; no allocation), otherwise by classical RK4 with
-//! sub-steps of at most `max_field_step` (default k / 50, the reference's advice; the path the
-//! fitter differentiates with ceres::Jet). The right-hand side has kinks (the switch delta_M, the
-//! clipping), where the adaptive controller shortens its steps.
+//! Integration: rate independent, integrated in H; any H(t), minor loops included. By default
+//! classical RK4 under step-size control (controlled_runge_kutta.hpp): each sample starts with a
+//! trial step of min(|dH|, k / 2), and a step is accepted when its error estimate is at most
+//! default_step_error M_s = 1e-7 M_s (the estimate is conservative: loops stay within ~1e-7 M_s of
+//! a k / 20000-step reference; where the solution is smooth a whole sample is one step). Until
+//! 2026-11 the default was fixed RK4 sub-steps of k / 50 (the reference's advice), 2-3 times the
+//! work on a saturating major loop and up to 20 times on loops of small k; `max_field_step` > 0
+//! keeps such fixed sub-steps. With `tolerance` > 0: Boost.Odeint's Dormand-Prince 5(4) with that
+//! absolute and relative error tolerance per step (in A/m for M; no allocation). The right-hand
+//! side has kinks (the switch delta_M, the clipping), which the step control sees as regime
+//! changes. The fitter differentiates the same integration in dual numbers.
 //! Initial state: demagnetised (H = 0, M = 0, M_irr = 0) or state_at(H, M). Known limitation of
 //! the model: minor loops do not close exactly.
 
@@ -45,6 +50,7 @@
 
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/assert.hpp"
+#include "hyst/core/controlled_runge_kutta.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -145,11 +151,15 @@ struct JilesAthertonCoefficients {
   T ms, a, k, c, alpha;
 };
 
-//! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k.
+//! Denominator delta k - alpha X kept on the side of delta, |.| >= 1e-3 k; `clamped` (when not
+//! null) tells whether the bound acted.
 template <class T>
-inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta) {
+inline T ja_denominator(const T& k, const T& alpha, const T& x, double delta,
+                        bool* clamped = nullptr) {
   T d = delta * k - alpha * x;
-  if (delta * d < 1e-3 * k) d = delta * 1e-3 * k;
+  const bool low = delta * d < 1e-3 * k;
+  if (low) d = delta * 1e-3 * k;
+  if (clamped) *clamped = low;
   return d;
 }
 
@@ -178,30 +188,65 @@ inline T ja_total_magnetisation(const JilesAthertonCoefficients<T>& p, double h,
   return ja_total_magnetisation(p, T(1.0 / p.a), h, m_irr, m);
 }
 
-//! Advances (M, M_irr) from field h0 by dh with `steps` RK4 steps, or adaptively with error
-//! tolerance `tolerance` when that is > 0 (double only).
+//! How one sample is integrated: Dormand-Prince with `tolerance` when that is > 0 (double only);
+//! otherwise fixed RK4 sub-steps of at most `max_step` when that is > 0; otherwise RK4 under error
+//! control (controlled_runge_kutta.hpp), error estimate <= `step_error` per step, first trial step
+//! <= `first_step`.
+struct JaIntegration {
+  double max_step = 0.0;    // [A/m]
+  double tolerance = 0.0;   // [A/m]
+  double step_error = 0.0;  // [A/m]
+  double first_step = 0.0;  // [A/m]
+};
+
+inline std::size_t field_substeps(double dh, double max_step) {
+  const double needed = std::ceil(std::abs(dh) / max_step);
+  if (needed < 1.0) return 1;
+  return needed > 1e5 ? std::size_t{100000} : static_cast<std::size_t>(needed);
+}
+
+//! One sample's integration of x' = f(x, tau, regime) over dh, as `integration` says.
+template <class T, class Rhs>
+inline void ja_integrate(std::array<T, 1>& x, double dh, const JaIntegration& integration,
+                         const Rhs& f) {
+  const bool dopri = std::is_same_v<T, double> && integration.tolerance > 0.0;
+  if (dopri || integration.max_step > 0.0) {
+    int regime = 0;
+    auto plain = [&](const std::array<T, 1>& s, double tau) { return f(s, tau, regime); };
+    const std::size_t steps = dopri ? 1 : field_substeps(dh, integration.max_step);
+    integrate_sample(x, T(dh), steps, dopri ? integration.tolerance : 0.0, plain);
+  } else {
+    rk4_controlled_integrate(x, dh, integration.step_error, integration.first_step, f);
+  }
+}
+
+//! Advances (M, M_irr) from field h0 by dh as `integration` says. The right-hand sides report
+//! their regime (delta_M on, denominator bounded, slope clipped) for the step control.
 template <class T>
 inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVariant variant,
-                       double h0, double dh, std::size_t steps, T& m, T& m_irr,
-                       double tolerance = 0.0) {
+                       double h0, double dh, const JaIntegration& integration, T& m, T& m_irr) {
   const double delta = dh > 0.0 ? 1.0 : -1.0;
   const T inv_a = 1.0 / p.a;
   if (variant == JilesAthertonVariant::original) {
     const T m_guess = m;
-    auto rhs = [&](const std::array<T, 1>& s, double tau) {
+    auto rhs = [&](const std::array<T, 1>& s, double tau, int& regime) {
       const double h = h0 + tau * dh;
       const T mt = ja_total_magnetisation(p, inv_a, h, s[0], m_guess);
       const T diff = p.ms * langevin((h + p.alpha * mt) * inv_a) - s[0];
+      regime = 0;
       if (!(delta * diff > 0.0)) return std::array<T, 1>{T(0.0)};
-      return std::array<T, 1>{diff / ja_denominator(p.k, p.alpha, diff, delta)};
+      bool clamped = false;
+      const T slope = diff / ja_denominator(p.k, p.alpha, diff, delta, &clamped);
+      regime = clamped ? 2 : 1;
+      return std::array<T, 1>{slope};
     };
     std::array<T, 1> x{m_irr};
-    integrate_sample(x, T(dh), steps, tolerance, rhs);
+    ja_integrate(x, dh, integration, rhs);
     m_irr = x[0];
     m = ja_total_magnetisation(p, inv_a, h0 + dh, m_irr, m_guess);
   } else {
     const T c_delta_k_chi = p.c * delta * p.k * p.ms * inv_a;  // c delta k dM_an/dH_e / L'
-    auto rhs = [&](const std::array<T, 1>& s, double tau) {
+    auto rhs = [&](const std::array<T, 1>& s, double tau, int& regime) {
       const double h = h0 + tau * dh;
       const T xe = (h + p.alpha * s[0]) * inv_a;
       T l(0.0);
@@ -209,22 +254,25 @@ inline void ja_advance(const JilesAthertonCoefficients<T>& p, JilesAthertonVaria
       langevin_pair(xe, l, dl);
       const T diff = p.ms * l - s[0];
       T n = c_delta_k_chi * dl;
-      if (delta * diff > 0.0) n += diff;
-      T slope = n / ja_denominator(p.k, p.alpha, n, delta);
-      if (slope < 0.0) slope = T(0.0);
+      regime = 0;
+      if (delta * diff > 0.0) {
+        n += diff;
+        regime = 1;
+      }
+      bool clamped = false;
+      T slope = n / ja_denominator(p.k, p.alpha, n, delta, &clamped);
+      if (clamped) regime += 2;
+      if (slope < 0.0) {
+        slope = T(0.0);
+        regime += 4;
+      }
       return std::array<T, 1>{slope};
     };
     std::array<T, 1> x{m};
-    integrate_sample(x, T(dh), steps, tolerance, rhs);
+    ja_integrate(x, dh, integration, rhs);
     m = x[0];
     m_irr = m;
   }
-}
-
-inline std::size_t field_substeps(double dh, double max_step) {
-  const double needed = std::ceil(std::abs(dh) / max_step);
-  if (needed < 1.0) return 1;
-  return needed > 1e5 ? std::size_t{100000} : static_cast<std::size_t>(needed);
 }
 
 }  // namespace detail
@@ -238,9 +286,18 @@ class JilesAtherton {
     double c = 0.2;         //!< reversibility [-] in [0, 1)
     double alpha = 1.6e-3;  //!< inter-domain coupling [-] >= 0, alpha M_s / (3 a) < 1
     JilesAthertonVariant variant = JilesAthertonVariant::original;
-    double max_field_step = 0.0;  //!< largest RK4 step in H [A/m]; 0 = k / 50
-    double tolerance = 0.0;       //!< 0 or [1e-14, 1] [A/m]: adaptive Dormand-Prince
+    //! > 0: fixed RK4 steps in H of at most this [A/m]; 0 = RK4 under error control (file
+    //! comment)
+    double max_field_step = 0.0;
+    double tolerance = 0.0;  //!< 0 or [1e-14, 1] [A/m]: adaptive Dormand-Prince
   };
+  //! Default integration: the error estimate of an RK4 step at most this times M_s.
+  static constexpr double default_step_error = 1e-7;
+  //! The integration of one sample for these parameters (file comment).
+  static detail::JaIntegration integration_of(const Params& params) {
+    return {params.max_field_step, params.tolerance, default_step_error * params.ms,
+            0.5 * params.k};
+  }
   struct State {
     double field = 0.0;          //!< H of the previous sample [A/m]
     double magnetisation = 0.0;  //!< M [A/m]
@@ -252,6 +309,7 @@ class JilesAtherton {
   explicit JilesAtherton(Params params);
 
   const Params& params() const { return params_; }
+  const detail::JaIntegration& integration() const { return integration_; }
   //! Demagnetised: H = 0, M = M_irr = 0.
   State initial_state() const { return {}; }
   //! At field H with magnetisation M, M_irr from M = c M_an + (1 - c) M_irr; throws hyst::Error
@@ -282,9 +340,8 @@ class JilesAtherton {
     HYST_ASSERT(std::isfinite(field), "step() needs a finite field");
     const double dh = field - state.field;
     if (dh != 0.0) {
-      detail::ja_advance(coefficients_, params_.variant, state.field, dh,
-                         detail::field_substeps(dh, max_step_), state.magnetisation,
-                         state.irreversible, params_.tolerance);
+      detail::ja_advance(coefficients_, params_.variant, state.field, dh, integration_,
+                         state.magnetisation, state.irreversible);
       state.field = field;
       state.direction = dh > 0.0 ? 1.0 : -1.0;
     }
@@ -294,7 +351,7 @@ class JilesAtherton {
  private:
   Params params_;
   detail::JilesAthertonCoefficients<double> coefficients_;
-  double max_step_;
+  detail::JaIntegration integration_;
 };
 
 //! "original" or "venkataraman".
