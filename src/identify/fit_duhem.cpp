@@ -1,12 +1,10 @@
 #include "hyst/identify/fit_duhem.hpp"
 
 #include "detail/record_fit.hpp"
-#include "detail/scalar_value.hpp"
+#include "hyst/core/scalar_value.hpp"
 
 namespace hyst {
 namespace {
-
-using detail::value_of;
 
 // q = (alpha, f_slope, f_sat, v_sat, r), physical = q * scale except r.
 struct DuhemKernel {
@@ -32,7 +30,7 @@ struct DuhemKernel {
     const T alpha = q[0] * scale[0];
     return detail::duhem_advance(alpha, T(q[1] * scale[1]), f_sat, v_sat, T(q[4] * f_sat / v_sat),
                                  v_prev, y, dv,
-                                 detail::substeps_for(dv, substeps, 1.0 / value_of(alpha)));
+                                 detail::substeps_for(dv, substeps, 1.0 / scalar_value(alpha)));
   }
   template <class T>
   T output(const T*, const T& y, double) const {

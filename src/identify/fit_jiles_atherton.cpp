@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include "detail/multistart_fit.hpp"
-#include "detail/scalar_value.hpp"
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/core/scalar_value.hpp"
 
 namespace hyst {
 namespace {
@@ -22,7 +22,6 @@ using JaVector = std::array<double, kJaParameters>;
 // any measured misfit; the refinement runs at the model's default.
 constexpr double kScreeningStepError = 100.0 * JilesAtherton::default_step_error;
 
-using detail::value_of;
 // Forward-mode derivatives for the simulation inside the fit: a value and its N partial
 // derivatives in a plain array, with only the operations the Jiles-Atherton integration uses, so
 // that the compiler inlines them (ceres::Jet's Eigen vectors of length 5 are not). The value part
@@ -216,8 +215,8 @@ class LoopError {
     if (!(p.ms > 0.0 && p.a > 0.0 && p.k > 0.0)) return false;
     if (!(p.alpha * p.ms / (3.0 * p.a) < 0.99)) return false;
     JilesAtherton::Params values;
-    values.ms = value_of(p.ms);
-    values.k = value_of(p.k);
+    values.ms = scalar_value(p.ms);
+    values.k = scalar_value(p.k);
     // dM/dH ~ 1/k: a fixed RK4 step must stay well below k, or the integration turns unstable.
     if (max_step_ > 0.0) values.max_field_step = std::min(max_step_, values.k / 20.0);
     auto integration = JilesAtherton::integration_of(values);
@@ -227,7 +226,7 @@ class LoopError {
       run_loop(p, variant_, loop.input, integration, periodic_, residuals + r);
       for (std::size_t k = 0; k < loop.input.size(); ++k, ++r) {
         residuals[r] = (residuals[r] - loop.output[k]) / b_scale_;
-        if (!std::isfinite(value_of(residuals[r]))) return false;
+        if (!std::isfinite(scalar_value(residuals[r]))) return false;
       }
     }
     return true;

@@ -23,22 +23,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
+
+#include "hyst/core/scalar_value.hpp"
 
 namespace hyst {
-
-namespace detail {
-
-template <class T>
-inline double plain_value(const T& x) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return x;
-  } else {
-    return x.a;
-  }
-}
-
-}  // namespace detail
 
 //! Integrates x' = f(x, tau, regime) over a length `span` (negative for a decreasing input), tau
 //! running from 0 to 1 across it; f returns dx/d(span) and sets `regime` (an int that changes where
@@ -88,11 +76,11 @@ inline void rk4_controlled_integrate(std::array<T, N>& x, double span, double to
     switched = switched || regime5 != regime1;
     double error = 0.0;
     for (std::size_t i = 0; i < N; ++i) {
-      const double k1v = detail::plain_value(k1[i]);
-      const double k5v = detail::plain_value(k5[i]);
-      const double e = switched ? std::abs(detail::plain_value(next[i]) -
-                                           detail::plain_value(x[i]) - 0.5 * hs * (k1v + k5v))
-                                : std::abs(hs / 6.0 * (detail::plain_value(k4[i]) - k5v));
+      const double k1v = scalar_value(k1[i]);
+      const double k5v = scalar_value(k5[i]);
+      const double e =
+          switched ? std::abs(scalar_value(next[i]) - scalar_value(x[i]) - 0.5 * hs * (k1v + k5v))
+                   : std::abs(hs / 6.0 * (scalar_value(k4[i]) - k5v));
       if (!(e <= error)) error = e;  // NaN kept
     }
     if (!std::isfinite(error)) {

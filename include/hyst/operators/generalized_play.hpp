@@ -32,20 +32,10 @@
 #include <vector>
 
 #include "hyst/core/assert.hpp"
+#include "hyst/core/scalar_value.hpp"
 #include "hyst/models/envelopes.hpp"
 
 namespace hyst {
-
-//! The value part of a scalar: the number itself, or the `a` member of an automatic-differentiation
-//! scalar such as ceres::Jet.
-template <class T>
-inline double scalar_value(const T& x) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return x;
-  } else {
-    return x.a;
-  }
-}
 
 //! One generalized play step from the envelope values at the current input,
 //! ascending = gamma_l(v[k]) and descending = gamma_r(v[k]), which all operators of a GPI model
