@@ -9,28 +9,13 @@
 #include "hyst/core/error.hpp"
 
 namespace hyst {
-namespace {
-
-constexpr detail::EnumNames<ControlStrategy, 4> kControlStrategyNames{{
-    {ControlStrategy::open_loop, "open_loop"},
-    {ControlStrategy::feedforward, "feedforward"},
-    {ControlStrategy::pid, "pid"},
-    {ControlStrategy::pid_feedforward, "pid_feedforward"},
-}};
-
-}  // namespace
-
-std::string_view to_string(ControlStrategy strategy) {
-  return detail::name_of(strategy, kControlStrategyNames);
-}
-
 // Accepts the short spelling "pid+ff" too, which the message does not list; the message lists the
 // names with commas only ("known: a, b, c"), as it always has.
 ControlStrategy control_strategy_from_string(std::string_view text) {
   if (text == "pid+ff") return ControlStrategy::pid_feedforward;
-  if (const auto strategy = detail::find_named(text, kControlStrategyNames)) return *strategy;
+  if (const auto strategy = detail::find_named(text, enum_names<ControlStrategy>)) return *strategy;
   throw Error(fmt::format("unknown control strategy '{}' (known: {})", text,
-                          detail::names_list(kControlStrategyNames, ", ")),
+                          detail::names_list(enum_names<ControlStrategy>, ", ")),
               "strategy");
 }
 

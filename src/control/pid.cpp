@@ -10,12 +10,6 @@
 namespace hyst::control {
 namespace {
 
-constexpr hyst::detail::EnumNames<AntiWindup, 3> kAntiWindupNames{{
-    {AntiWindup::none, "none"},
-    {AntiWindup::clamping, "clamping"},
-    {AntiWindup::back_calculation, "back_calculation"},
-}};
-
 void require_gain(double value, const char* field) {
   if (!std::isfinite(value) || value < 0.0) {
     throw Error(fmt::format("PID {} = {} must be finite and >= 0", field, value), field);
@@ -24,15 +18,11 @@ void require_gain(double value, const char* field) {
 
 }  // namespace
 
-std::string_view to_string(AntiWindup mode) {
-  return hyst::detail::name_of(mode, kAntiWindupNames);
-}
-
 // Its message lists the names with commas only ("known: a, b, c"), as it always has.
 AntiWindup anti_windup_from_string(std::string_view text) {
-  if (const auto mode = hyst::detail::find_named(text, kAntiWindupNames)) return *mode;
+  if (const auto mode = hyst::detail::find_named(text, enum_names<AntiWindup>)) return *mode;
   throw Error(fmt::format("unknown anti-windup '{}' (known: {})", text,
-                          hyst::detail::names_list(kAntiWindupNames, ", ")),
+                          hyst::detail::names_list(enum_names<AntiWindup>, ", ")),
               "anti_windup");
 }
 

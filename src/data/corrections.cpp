@@ -12,22 +12,8 @@
 #include "record_checks.hpp"
 
 namespace hyst::data {
-namespace {
-
-constexpr hyst::detail::EnumNames<OffsetReference, 3> kReferenceNames{{
-    {OffsetReference::mean, "mean"},
-    {OffsetReference::first, "first"},
-    {OffsetReference::midrange, "midrange"},
-}};
-
-}  // namespace
-
-std::string_view to_string(OffsetReference reference) {
-  return hyst::detail::name_of(reference, kReferenceNames);
-}
-
 OffsetReference offset_reference_from_string(std::string_view text) {
-  return hyst::detail::value_named(text, kReferenceNames, "offset reference");
+  return hyst::detail::value_named(text, enum_names<OffsetReference>, "offset reference");
 }
 
 OffsetRemoval remove_offset(std::span<const double> values, OffsetReference reference) {

@@ -17,12 +17,6 @@
 namespace hyst::data {
 namespace {
 
-constexpr hyst::detail::EnumNames<ResampleMethod, 3> kMethodNames{{
-    {ResampleMethod::none, "none"},
-    {ResampleMethod::input_grid, "input-grid"},
-    {ResampleMethod::arc_length, "arc-length"},
-}};
-
 std::optional<std::size_t> whole_number(std::string_view text) {
   std::size_t value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -76,12 +70,8 @@ std::string to_string(const CycleRange& range) {
   return fmt::format("{}-{}", range.first, range.last);
 }
 
-std::string_view to_string(ResampleMethod method) {
-  return hyst::detail::name_of(method, kMethodNames);
-}
-
 ResampleMethod resample_method_from_string(std::string_view text) {
-  return hyst::detail::value_named(text, kMethodNames, "resampling method");
+  return hyst::detail::value_named(text, enum_names<ResampleMethod>, "resampling method");
 }
 
 PreparedRecord preprocess(std::span<const double> input, std::span<const double> output,

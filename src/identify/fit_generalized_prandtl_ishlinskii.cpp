@@ -26,10 +26,6 @@ using Kernel = GpiKernel<TanhEnvelope, T>;
 
 constexpr std::array<std::string_view, kGpiParameterCount> kParameterNames{
     "a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3", "rho", "tau", "alpha"};
-constexpr detail::EnumNames<GpiFitOptions::InitialState, 2> kGpiInitialStateNames{{
-    {GpiFitOptions::InitialState::rest, "rest"},
-    {GpiFitOptions::InitialState::periodic, "periodic"},
-}};
 constexpr std::size_t kRho = static_cast<std::size_t>(GpiParameter::rho);
 constexpr std::size_t kMaxM = 200;
 constexpr std::size_t kPenaltyGrid = 64;
@@ -469,12 +465,9 @@ GpiParameter gpi_parameter_from_string(std::string_view text) {
                   text));
 }
 
-std::string_view to_string(GpiFitOptions::InitialState state) {
-  return detail::name_of(state, kGpiInitialStateNames);
-}
-
 GpiFitOptions::InitialState gpi_initial_state_from_string(std::string_view text) {
-  return detail::value_named(text, kGpiInitialStateNames, "GPI initial state", "initial_state");
+  return detail::value_named(text, enum_names<GpiFitOptions::InitialState>, "GPI initial state",
+                             "initial_state");
 }
 
 GpiParams gpi_params_from_vector(const GpiParameterVector& theta, std::size_t m, double input_min,

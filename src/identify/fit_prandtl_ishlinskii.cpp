@@ -21,11 +21,6 @@
 namespace hyst {
 namespace {
 
-constexpr detail::EnumNames<PiFitOptions::InitialState, 2> kPiInitialStateNames{{
-    {PiFitOptions::InitialState::virgin, "virgin"},
-    {PiFitOptions::InitialState::periodic, "periodic"},
-}};
-
 struct Record {
   std::span<const double> input;
   std::span<const double> output;
@@ -214,12 +209,9 @@ PiFit fit(const Record& record, const std::optional<Record>& held_out,
 
 }  // namespace
 
-std::string_view to_string(PiFitOptions::InitialState state) {
-  return detail::name_of(state, kPiInitialStateNames);
-}
-
 PiFitOptions::InitialState pi_initial_state_from_string(std::string_view text) {
-  return detail::value_named(text, kPiInitialStateNames, "PI initial state", "initial_state");
+  return detail::value_named(text, enum_names<PiFitOptions::InitialState>, "PI initial state",
+                             "initial_state");
 }
 
 std::vector<double> pi_default_thresholds(std::span<const double> input, std::size_t operators) {

@@ -15,13 +15,6 @@ namespace {
 constexpr double kBandRanges = 10.0;       // width of the admissible band in measured ranges
 constexpr double kDegenerateRatio = 0.01;  // std(simulated) / std(measured) below: degenerate
 
-constexpr detail::EnumNames<FitQuality, 4> kFitQualityNames{{
-    {FitQuality::unchecked, "unchecked"},
-    {FitQuality::sound, "sound"},
-    {FitQuality::degenerate, "degenerate"},
-    {FitQuality::unstable, "unstable"},
-}};
-
 double standard_deviation(std::span<const double> values) {
   double mean = 0.0;
   for (const double v : values)
@@ -34,10 +27,6 @@ double standard_deviation(std::span<const double> values) {
 }
 
 }  // namespace
-
-std::string_view to_string(FitQuality quality) {
-  return detail::name_of(quality, kFitQualityNames);
-}
 
 QualityVerdict judge_simulation(std::span<const double> measured, std::span<const double> simulated,
                                 std::size_t judged_begin) {

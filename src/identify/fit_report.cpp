@@ -13,13 +13,6 @@
 namespace hyst {
 namespace {
 
-constexpr detail::EnumNames<Termination, 4> kTerminationNames{{
-    {Termination::converged, "converged"},
-    {Termination::max_iterations, "max_iterations"},
-    {Termination::no_progress, "no_progress"},
-    {Termination::failed, "failed"},
-}};
-
 std::string metrics_sentence(std::string_view part, const ErrorMetrics& metrics) {
   return fmt::format("{}: RMSE {:.4g}, NRMSE {:.4g} %, max error {:.4g} on {} samples.", part,
                      metrics.rmse, metrics.nrmse_percent, metrics.max_error, metrics.samples);
@@ -42,12 +35,8 @@ std::string metrics_row(std::string_view part, const ErrorMetrics& metrics) {
 
 }  // namespace
 
-std::string_view to_string(Termination termination) {
-  return detail::name_of(termination, kTerminationNames);
-}
-
 Termination termination_from_string(std::string_view text) {
-  return detail::value_named(text, kTerminationNames, "termination");
+  return detail::value_named(text, enum_names<Termination>, "termination");
 }
 
 std::string_view FitReport::status() const {

@@ -32,11 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using detail::check_mat_sizes;
 
-constexpr hyst::detail::EnumNames<MatVersion, 2> kMatVersionNames{{
-    {MatVersion::v5, "v5"},
-    {MatVersion::v7_3, "v7.3"},
-}};
-
 struct MatCloser {
   void operator()(mat_t* mat) const { Mat_Close(mat); }
 };
@@ -213,12 +208,8 @@ void validate_variables(const fs::path& path,
 
 }  // namespace
 
-std::string_view to_string(MatVersion version) {
-  return hyst::detail::name_of(version, kMatVersionNames);
-}
-
 MatVersion mat_version_from_string(std::string_view text) {
-  return hyst::detail::value_named(text, kMatVersionNames, "MAT file version");
+  return hyst::detail::value_named(text, enum_names<MatVersion>, "MAT file version");
 }
 
 std::vector<std::string> list_mat_variables(const fs::path& path) {

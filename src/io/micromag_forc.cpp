@@ -30,12 +30,6 @@ struct Block {
   std::size_t size() const { return lines.size(); }
 };
 
-constexpr hyst::detail::EnumNames<ForcDriftCorrection, 3> kDriftNames{{
-    {ForcDriftCorrection::none, "none"},
-    {ForcDriftCorrection::multiplicative, "multiplicative"},
-    {ForcDriftCorrection::additive, "additive"},
-}};
-
 //! Series 0015 ends its header with "NData = N"; Series 0016 writes "Number of data   N".
 bool has_ndata_line(detail::LineReader lines) {
   std::string_view line;
@@ -311,12 +305,8 @@ MicromagForcFile read_micromag_forc(const std::filesystem::path& path) {
   return parse_micromag_forc(read_file(path), path.string());
 }
 
-std::string_view to_string(ForcDriftCorrection correction) {
-  return hyst::detail::name_of(correction, kDriftNames);
-}
-
 ForcDriftCorrection forc_drift_correction_from_string(std::string_view text) {
-  return hyst::detail::value_named(text, kDriftNames, "FORC drift correction");
+  return hyst::detail::value_named(text, enum_names<ForcDriftCorrection>, "FORC drift correction");
 }
 
 MicromagForcFile correct_drift(MicromagForcFile file, ForcDriftCorrection correction) {

@@ -4,15 +4,6 @@
 #include "detail/parameter_rules.hpp"
 
 namespace hyst {
-namespace {
-
-constexpr detail::EnumNames<BoucWenOscillator::InputBetweenSamples, 2> kInputBetweenSamplesNames{{
-    {BoucWenOscillator::InputBetweenSamples::linear, "linear"},
-    {BoucWenOscillator::InputBetweenSamples::hold, "hold"},
-}};
-
-}  // namespace
-
 BoucWenOscillator::BoucWenOscillator(Params params) : params_(params) {
   const detail::ParameterRules rules{"Bouc-Wen oscillator"};
   rules.greater(params_.mass, 0.0, "mass m", "mass");
@@ -40,13 +31,9 @@ BoucWenOscillator::Params BoucWenOscillator::benchmark() {
   return Params{};
 }
 
-std::string_view to_string(BoucWenOscillator::InputBetweenSamples mode) {
-  return detail::name_of(mode, kInputBetweenSamplesNames);
-}
-
 BoucWenOscillator::InputBetweenSamples input_between_samples_from_string(std::string_view text) {
-  return detail::value_named(text, kInputBetweenSamplesNames, "input_between_samples",
-                             "input_between_samples");
+  return detail::value_named(text, enum_names<BoucWenOscillator::InputBetweenSamples>,
+                             "input_between_samples", "input_between_samples");
 }
 
 }  // namespace hyst

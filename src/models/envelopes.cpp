@@ -12,12 +12,6 @@
 namespace hyst {
 namespace {
 
-constexpr detail::EnumNames<EnvelopeKind, 3> kEnvelopeNames{{
-    {EnvelopeKind::linear, "linear"},
-    {EnvelopeKind::tanh, "tanh"},
-    {EnvelopeKind::arctan, "arctan"},
-}};
-
 std::string field(const EnvelopeLabel& label, std::size_t index) {
   return fmt::format("{}[{}]", label.curve, index);
 }
@@ -60,12 +54,8 @@ void validate_slope(std::span<const double> c, EnvelopeKind kind, const Envelope
 
 }  // namespace
 
-std::string_view to_string(EnvelopeKind kind) {
-  return detail::name_of(kind, kEnvelopeNames);
-}
-
 EnvelopeKind envelope_kind_from_string(std::string_view text) {
-  return detail::value_named(text, kEnvelopeNames, "envelope", "envelope");
+  return detail::value_named(text, enum_names<EnvelopeKind>, "envelope", "envelope");
 }
 
 void LinearEnvelope::validate(std::span<const double> c, const EnvelopeLabel& label) {

@@ -13,11 +13,6 @@ namespace {
 
 constexpr std::size_t kMaxLevels = 4096;
 
-constexpr detail::EnumNames<PreisachGridLayout, 2> kLayoutNames{{
-    {PreisachGridLayout::cell_centred, "cell_centred"},
-    {PreisachGridLayout::endpoints, "endpoints"},
-}};
-
 void validate_range(std::size_t levels, double lower, double upper, PreisachGridLayout layout) {
   if (levels == 0 || levels > kMaxLevels) {
     throw Error(fmt::format("Preisach levels N = {} must be in 1 .. {} (the Everett table has "
@@ -41,12 +36,9 @@ void validate_range(std::size_t levels, double lower, double upper, PreisachGrid
 
 }  // namespace
 
-std::string_view to_string(PreisachGridLayout layout) {
-  return detail::name_of(layout, kLayoutNames);
-}
-
 PreisachGridLayout preisach_grid_layout_from_string(std::string_view text) {
-  return detail::value_named(text, kLayoutNames, "Preisach grid layout", "layout");
+  return detail::value_named(text, enum_names<PreisachGridLayout>, "Preisach grid layout",
+                             "layout");
 }
 
 std::vector<double> preisach_thresholds(std::size_t levels, double lower, double upper,

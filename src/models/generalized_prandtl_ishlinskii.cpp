@@ -14,11 +14,6 @@
 namespace hyst {
 namespace {
 
-constexpr detail::EnumNames<GpiDensity, 2> kDensityNames{{
-    {GpiDensity::exponential, "exponential"},
-    {GpiDensity::free, "free"},
-}};
-
 // Keeps a mistyped m (e.g. a negative number read into a size) from allocating the machine away.
 constexpr std::size_t kMaxOperators = 1'000'000;
 
@@ -111,12 +106,8 @@ void validate(const GpiParams& params) {
 
 }  // namespace
 
-std::string_view to_string(GpiDensity density) {
-  return detail::name_of(density, kDensityNames);
-}
-
 GpiDensity gpi_density_from_string(std::string_view text) {
-  return detail::value_named(text, kDensityNames, "GPI density", "density");
+  return detail::value_named(text, enum_names<GpiDensity>, "GPI density", "density");
 }
 
 template <Envelope E>

@@ -10,11 +10,6 @@ namespace hyst {
 namespace {
 
 // In the order of the parser's message, which lists the resting branch first.
-constexpr detail::EnumNames<IkutaSma::Branch, 3> kIkutaBranchNames{{
-    {IkutaSma::Branch::rest, "rest"},
-    {IkutaSma::Branch::heating, "heating"},
-    {IkutaSma::Branch::cooling, "cooling"},
-}};
 
 void require_finite_parameter(double value, std::string_view field, std::string_view symbol) {
   if (!std::isfinite(value)) {
@@ -88,12 +83,8 @@ IkutaSma::State IkutaSma::make_state(double fraction, double input, Branch branc
   return state;
 }
 
-std::string_view to_string(IkutaSma::Branch branch) {
-  return detail::name_of(branch, kIkutaBranchNames);
-}
-
 IkutaSma::Branch ikuta_branch_from_string(std::string_view text) {
-  return detail::value_named(text, kIkutaBranchNames, "Ikuta branch", "branch");
+  return detail::value_named(text, enum_names<IkutaSma::Branch>, "Ikuta branch", "branch");
 }
 
 }  // namespace hyst

@@ -6,15 +6,6 @@
 #include "detail/parameter_rules.hpp"
 
 namespace hyst {
-namespace {
-
-constexpr detail::EnumNames<JilesAthertonVariant, 2> kJilesAthertonVariantNames{{
-    {JilesAthertonVariant::original, "original"},
-    {JilesAthertonVariant::venkataraman, "venkataraman"},
-}};
-
-}  // namespace
-
 JilesAtherton::JilesAtherton(Params params) : params_(params) {
   const detail::ParameterRules rules{"Jiles-Atherton"};
   rules.greater(params_.ms, 0.0, "saturation magnetisation M_s", "ms");
@@ -91,12 +82,9 @@ double JilesAtherton::susceptibility(const State& state, double direction) const
   return std::max(slope, 0.0);
 }
 
-std::string_view to_string(JilesAthertonVariant variant) {
-  return detail::name_of(variant, kJilesAthertonVariantNames);
-}
-
 JilesAthertonVariant jiles_atherton_variant_from_string(std::string_view text) {
-  return detail::value_named(text, kJilesAthertonVariantNames, "Jiles-Atherton variant", "variant");
+  return detail::value_named(text, enum_names<JilesAthertonVariant>, "Jiles-Atherton variant",
+                             "variant");
 }
 
 }  // namespace hyst

@@ -8,22 +8,9 @@
 #include "hyst/core/error.hpp"
 
 namespace hyst {
-namespace {
-
-constexpr detail::EnumNames<PreisachInitialState, 3> kInitialStateNames{{
-    {PreisachInitialState::negative_saturation, "negative_saturation"},
-    {PreisachInitialState::positive_saturation, "positive_saturation"},
-    {PreisachInitialState::demagnetised, "demagnetised"},
-}};
-
-}  // namespace
-
-std::string_view to_string(PreisachInitialState state) {
-  return detail::name_of(state, kInitialStateNames);
-}
-
 PreisachInitialState preisach_initial_state_from_string(std::string_view text) {
-  return detail::value_named(text, kInitialStateNames, "Preisach initial state", "initial_state");
+  return detail::value_named(text, enum_names<PreisachInitialState>, "Preisach initial state",
+                             "initial_state");
 }
 
 std::vector<double> preisach_midpoint_staircase(double lower, double upper, std::size_t pairs) {

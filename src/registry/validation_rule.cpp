@@ -11,41 +11,18 @@
 #include "hyst/core/error.hpp"
 
 namespace hyst {
-namespace {
-
-constexpr detail::EnumNames<ValidationStart, 3> kValidationStartNames{{
-    {ValidationStart::rest, "rest"},
-    {ValidationStart::periodic, "periodic"},
-    {ValidationStart::continued, "continue"},
-}};
-
-constexpr detail::EnumNames<ValidationAlignment, 2> kValidationAlignmentNames{{
-    {ValidationAlignment::none, "none"},
-    {ValidationAlignment::first_sample, "first-sample"},
-}};
-
-}  // namespace
-
-std::string_view to_string(ValidationStart start) {
-  return detail::name_of(start, kValidationStartNames);
-}
-
-std::string_view to_string(ValidationAlignment align) {
-  return detail::name_of(align, kValidationAlignmentNames);
-}
-
 // These messages have their own form ("'x' is not known (a, b, c)"), which users match.
 ValidationStart validation_start_from_string(std::string_view text) {
-  if (const auto start = detail::find_named(text, kValidationStartNames)) return *start;
+  if (const auto start = detail::find_named(text, enum_names<ValidationStart>)) return *start;
   throw Error(fmt::format("validation start '{}' is not known ({})", text,
-                          detail::names_list(kValidationStartNames, ", ")),
+                          detail::names_list(enum_names<ValidationStart>, ", ")),
               "validation_start");
 }
 
 ValidationAlignment validation_alignment_from_string(std::string_view text) {
-  if (const auto align = detail::find_named(text, kValidationAlignmentNames)) return *align;
+  if (const auto align = detail::find_named(text, enum_names<ValidationAlignment>)) return *align;
   throw Error(fmt::format("validation align '{}' is not known ({})", text,
-                          detail::names_list(kValidationAlignmentNames, ", ")),
+                          detail::names_list(enum_names<ValidationAlignment>, ", ")),
               "validation_align");
 }
 

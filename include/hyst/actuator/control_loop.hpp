@@ -24,6 +24,7 @@
 #include "hyst/actuator/actuator.hpp"
 #include "hyst/actuator/force_compensator.hpp"
 #include "hyst/control/pid.hpp"
+#include "hyst/core/enum_names.hpp"
 
 namespace hyst {
 
@@ -31,7 +32,14 @@ enum class ControlStrategy : unsigned char { open_loop, feedforward, pid, pid_fe
 inline constexpr ControlStrategy kControlStrategies[] = {
     ControlStrategy::open_loop, ControlStrategy::feedforward, ControlStrategy::pid,
     ControlStrategy::pid_feedforward};
-std::string_view to_string(ControlStrategy strategy);
+constexpr EnumNames<ControlStrategy, 4> enumerator_names(ControlStrategy) {
+  return {{
+      {ControlStrategy::open_loop, "open_loop"},
+      {ControlStrategy::feedforward, "feedforward"},
+      {ControlStrategy::pid, "pid"},
+      {ControlStrategy::pid_feedforward, "pid_feedforward"},
+  }};
+}
 //! The inverse of to_string(); also accepts "pid+ff". hyst::Error for other text.
 ControlStrategy control_strategy_from_string(std::string_view text);
 

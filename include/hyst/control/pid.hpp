@@ -25,10 +25,20 @@
 #include <limits>
 #include <string_view>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst::control {
 
+using hyst::to_string;
+
 enum class AntiWindup : unsigned char { none, clamping, back_calculation };
-std::string_view to_string(AntiWindup mode);
+constexpr EnumNames<AntiWindup, 3> enumerator_names(AntiWindup) {
+  return {{
+      {AntiWindup::none, "none"},
+      {AntiWindup::clamping, "clamping"},
+      {AntiWindup::back_calculation, "back_calculation"},
+  }};
+}
 //! The inverse of to_string(); hyst::Error for other text.
 AntiWindup anti_windup_from_string(std::string_view text);
 

@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst {
 
 enum class InverseStatus : unsigned char {
@@ -15,7 +17,13 @@ enum class InverseStatus : unsigned char {
   above_range,  //!< the input was lowered to its upper limit
 };
 
-std::string_view to_string(InverseStatus status);
+constexpr EnumNames<InverseStatus, 3> enumerator_names(InverseStatus) {
+  return {{
+      {InverseStatus::ok, "ok"},
+      {InverseStatus::below_range, "below_range"},
+      {InverseStatus::above_range, "above_range"},
+  }};
+}
 
 //! One inverse sample: the input to apply and whether it had to be limited.
 struct InverseSample {

@@ -17,7 +17,11 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst::data {
+
+using hyst::to_string;
 
 enum class OffsetReference : unsigned char {
   mean,      //!< the mean of the samples
@@ -26,7 +30,13 @@ enum class OffsetReference : unsigned char {
 };
 
 //! "mean", "first", "midrange" and back (hyst::Error for other text).
-std::string_view to_string(OffsetReference reference);
+constexpr EnumNames<OffsetReference, 3> enumerator_names(OffsetReference) {
+  return {{
+      {OffsetReference::mean, "mean"},
+      {OffsetReference::first, "first"},
+      {OffsetReference::midrange, "midrange"},
+  }};
+}
 OffsetReference offset_reference_from_string(std::string_view text);
 
 struct OffsetRemoval {

@@ -14,7 +14,11 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst::data {
+
+using hyst::to_string;
 
 //! Cycles first..last, 1-based and inclusive; last = 0 means "to the last cycle".
 struct CycleRange {
@@ -30,7 +34,13 @@ std::string to_string(const CycleRange& range);
 enum class ResampleMethod : unsigned char { none, input_grid, arc_length };
 
 //! "none", "input-grid", "arc-length" and back (hyst::Error for other text).
-std::string_view to_string(ResampleMethod method);
+constexpr EnumNames<ResampleMethod, 3> enumerator_names(ResampleMethod) {
+  return {{
+      {ResampleMethod::none, "none"},
+      {ResampleMethod::input_grid, "input-grid"},
+      {ResampleMethod::arc_length, "arc-length"},
+  }};
+}
 ResampleMethod resample_method_from_string(std::string_view text);
 
 struct Preprocessing {

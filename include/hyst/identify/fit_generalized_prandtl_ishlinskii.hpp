@@ -57,6 +57,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
@@ -112,7 +113,12 @@ struct GpiFitOptions {
 };
 
 //! "rest" or "periodic".
-std::string_view to_string(GpiFitOptions::InitialState state);
+constexpr EnumNames<GpiFitOptions::InitialState, 2> enumerator_names(GpiFitOptions::InitialState) {
+  return {{
+      {GpiFitOptions::InitialState::rest, "rest"},
+      {GpiFitOptions::InitialState::periodic, "periodic"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 GpiFitOptions::InitialState gpi_initial_state_from_string(std::string_view text);
 

@@ -44,6 +44,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 
@@ -75,7 +76,12 @@ struct PiFitOptions {
 };
 
 //! "virgin" or "periodic".
-std::string_view to_string(PiFitOptions::InitialState state);
+constexpr EnumNames<PiFitOptions::InitialState, 2> enumerator_names(PiFitOptions::InitialState) {
+  return {{
+      {PiFitOptions::InitialState::virgin, "virgin"},
+      {PiFitOptions::InitialState::periodic, "periodic"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 PiFitOptions::InitialState pi_initial_state_from_string(std::string_view text);
 

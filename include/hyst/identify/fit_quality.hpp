@@ -19,6 +19,8 @@
 #include <string>
 #include <string_view>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst {
 
 enum class FitQuality {
@@ -29,7 +31,14 @@ enum class FitQuality {
 };
 
 //! "unchecked", "sound", "degenerate", "unstable".
-std::string_view to_string(FitQuality quality);
+constexpr EnumNames<FitQuality, 4> enumerator_names(FitQuality) {
+  return {{
+      {FitQuality::unchecked, "unchecked"},
+      {FitQuality::sound, "sound"},
+      {FitQuality::degenerate, "degenerate"},
+      {FitQuality::unstable, "unstable"},
+  }};
+}
 
 struct QualityVerdict {
   FitQuality quality = FitQuality::unchecked;

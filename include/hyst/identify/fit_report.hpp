@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/identify/error_metrics.hpp"
 #include "hyst/identify/fit_quality.hpp"
 #include "hyst/identify/reference_predictors.hpp"
@@ -43,7 +44,14 @@ enum class Termination {
 };
 
 //! "converged", "max_iterations", "no_progress", "failed".
-std::string_view to_string(Termination termination);
+constexpr EnumNames<Termination, 4> enumerator_names(Termination) {
+  return {{
+      {Termination::converged, "converged"},
+      {Termination::max_iterations, "max_iterations"},
+      {Termination::no_progress, "no_progress"},
+      {Termination::failed, "failed"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for any other text
 //! ("unknown termination 'done' (expected converged, max_iterations, no_progress or failed)").
 Termination termination_from_string(std::string_view text);

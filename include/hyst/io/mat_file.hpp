@@ -29,7 +29,11 @@
 #include <utility>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst::io {
+
+using hyst::to_string;
 
 enum class MatVersion {
   v5,    //!< MATLAB 5 (Level 5 MAT-file), uncompressed
@@ -37,7 +41,12 @@ enum class MatVersion {
 };
 
 //! "v5" or "v7.3".
-std::string_view to_string(MatVersion version);
+constexpr EnumNames<MatVersion, 2> enumerator_names(MatVersion) {
+  return {{
+      {MatVersion::v5, "v5"},
+      {MatVersion::v7_3, "v7.3"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 MatVersion mat_version_from_string(std::string_view text);
 

@@ -79,7 +79,11 @@
 #include <utility>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst::io {
+
+using hyst::to_string;
 
 //! Which header a FORC file has (see the file comment).
 enum class MicromagForcLayout : unsigned char {
@@ -137,7 +141,13 @@ enum class ForcDriftCorrection : unsigned char {
   additive,        //!< m' = m - (m_cal(t) - m_cal,0): a drifting offset
 };
 //! "none", "multiplicative", "additive" and back (hyst::Error for other text).
-std::string_view to_string(ForcDriftCorrection correction);
+constexpr EnumNames<ForcDriftCorrection, 3> enumerator_names(ForcDriftCorrection) {
+  return {{
+      {ForcDriftCorrection::none, "none"},
+      {ForcDriftCorrection::multiplicative, "multiplicative"},
+      {ForcDriftCorrection::additive, "additive"},
+  }};
+}
 ForcDriftCorrection forc_drift_correction_from_string(std::string_view text);
 
 //! The file with every moment corrected for drift: m_cal(t) for point i of an n-point curve is

@@ -35,6 +35,7 @@
 
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/assert.hpp"
+#include "hyst/core/enum_names.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -135,7 +136,13 @@ class BoucWenOscillator {
 };
 
 //! "linear" or "hold".
-std::string_view to_string(BoucWenOscillator::InputBetweenSamples mode);
+constexpr EnumNames<BoucWenOscillator::InputBetweenSamples, 2> enumerator_names(
+    BoucWenOscillator::InputBetweenSamples) {
+  return {{
+      {BoucWenOscillator::InputBetweenSamples::linear, "linear"},
+      {BoucWenOscillator::InputBetweenSamples::hold, "hold"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 BoucWenOscillator::InputBetweenSamples input_between_samples_from_string(std::string_view text);
 

@@ -49,6 +49,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/core/inverse_status.hpp"
 
 namespace hyst {
@@ -57,7 +58,13 @@ namespace hyst {
 enum class EnvelopeKind : unsigned char { linear, tanh, arctan };
 
 //! "linear", "tanh" or "arctan".
-std::string_view to_string(EnvelopeKind kind);
+constexpr EnumNames<EnvelopeKind, 3> enumerator_names(EnvelopeKind) {
+  return {{
+      {EnvelopeKind::linear, "linear"},
+      {EnvelopeKind::tanh, "tanh"},
+      {EnvelopeKind::arctan, "arctan"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text
 //! ("unknown envelope 'cubic' (expected linear, tanh or arctan)").
 EnvelopeKind envelope_kind_from_string(std::string_view text);

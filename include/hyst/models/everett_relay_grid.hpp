@@ -35,6 +35,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst {
 
 //! Where the N threshold levels sit in [lower, upper] (see the file comment).
@@ -44,7 +46,12 @@ enum class PreisachGridLayout : unsigned char {
 };
 
 //! "cell_centred", "endpoints".
-std::string_view to_string(PreisachGridLayout layout);
+constexpr EnumNames<PreisachGridLayout, 2> enumerator_names(PreisachGridLayout) {
+  return {{
+      {PreisachGridLayout::cell_centred, "cell_centred"},
+      {PreisachGridLayout::endpoints, "endpoints"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 PreisachGridLayout preisach_grid_layout_from_string(std::string_view text);
 

@@ -54,6 +54,7 @@
 #include <Eigen/Core>
 
 #include "hyst/core/assert.hpp"
+#include "hyst/core/enum_names.hpp"
 #include "hyst/models/envelopes.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/operators/generalized_play.hpp"
@@ -65,7 +66,12 @@ enum class GpiDensity : unsigned char {
   exponential,  //!< r_j = alpha j, p_j = rho exp(-tau r_j), j = 0..m (the paper's form)
   free,         //!< thresholds and weights listed explicitly
 };
-std::string_view to_string(GpiDensity density);
+constexpr EnumNames<GpiDensity, 2> enumerator_names(GpiDensity) {
+  return {{
+      {GpiDensity::exponential, "exponential"},
+      {GpiDensity::free, "free"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 GpiDensity gpi_density_from_string(std::string_view text);
 

@@ -43,6 +43,7 @@
 #include <string_view>
 
 #include "hyst/core/assert.hpp"
+#include "hyst/core/enum_names.hpp"
 
 namespace hyst {
 
@@ -132,7 +133,13 @@ class IkutaSma {
 };
 
 //! "rest", "heating", "cooling"; and back (hyst::Error for other text).
-std::string_view to_string(IkutaSma::Branch branch);
+constexpr EnumNames<IkutaSma::Branch, 3> enumerator_names(IkutaSma::Branch) {
+  return {{
+      {IkutaSma::Branch::rest, "rest"},
+      {IkutaSma::Branch::heating, "heating"},
+      {IkutaSma::Branch::cooling, "cooling"},
+  }};
+}
 IkutaSma::Branch ikuta_branch_from_string(std::string_view text);
 
 }  // namespace hyst

@@ -51,6 +51,7 @@
 #include "hyst/core/adaptive_integration.hpp"
 #include "hyst/core/assert.hpp"
 #include "hyst/core/controlled_runge_kutta.hpp"
+#include "hyst/core/enum_names.hpp"
 #include "hyst/core/runge_kutta.hpp"
 
 namespace hyst {
@@ -355,7 +356,12 @@ class JilesAtherton {
 };
 
 //! "original" or "venkataraman".
-std::string_view to_string(JilesAthertonVariant variant);
+constexpr EnumNames<JilesAthertonVariant, 2> enumerator_names(JilesAthertonVariant) {
+  return {{
+      {JilesAthertonVariant::original, "original"},
+      {JilesAthertonVariant::venkataraman, "venkataraman"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 JilesAthertonVariant jiles_atherton_variant_from_string(std::string_view text);
 

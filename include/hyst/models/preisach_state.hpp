@@ -37,6 +37,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hyst/core/enum_names.hpp"
+
 namespace hyst {
 
 //! The initial state of a Preisach model.
@@ -50,7 +52,13 @@ enum class PreisachInitialState : unsigned char {
 };
 
 //! "negative_saturation", "positive_saturation", "demagnetised".
-std::string_view to_string(PreisachInitialState state);
+constexpr EnumNames<PreisachInitialState, 3> enumerator_names(PreisachInitialState) {
+  return {{
+      {PreisachInitialState::negative_saturation, "negative_saturation"},
+      {PreisachInitialState::positive_saturation, "positive_saturation"},
+      {PreisachInitialState::demagnetised, "demagnetised"},
+  }};
+}
 //! The inverse of to_string(); throws hyst::Error for other text.
 PreisachInitialState preisach_initial_state_from_string(std::string_view text);
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
@@ -36,8 +37,19 @@ struct ValidationRule {
   ValidationAlignment align = ValidationAlignment::none;
 };
 
-std::string_view to_string(ValidationStart start);
-std::string_view to_string(ValidationAlignment align);
+constexpr EnumNames<ValidationStart, 3> enumerator_names(ValidationStart) {
+  return {{
+      {ValidationStart::rest, "rest"},
+      {ValidationStart::periodic, "periodic"},
+      {ValidationStart::continued, "continue"},
+  }};
+}
+constexpr EnumNames<ValidationAlignment, 2> enumerator_names(ValidationAlignment) {
+  return {{
+      {ValidationAlignment::none, "none"},
+      {ValidationAlignment::first_sample, "first-sample"},
+  }};
+}
 //! The inverse of to_string(); hyst::Error naming the text and the known names otherwise.
 ValidationStart validation_start_from_string(std::string_view text);
 ValidationAlignment validation_alignment_from_string(std::string_view text);

@@ -1,9 +1,7 @@
 #pragma once
-// The names of an enumeration, in one table per enumeration: its to_string() and its parser (with
-// the "expected a, b or c" list of its error message) are both derived from that table, so a value
-// added to the table is spelled, parsed and listed alike.
-//
-// The header lives in src/core, the lowest layer, so that every layer can use it.
+// Parsing by an enumeration's name table (hyst/core/enum_names.hpp), with the "expected a, b or c"
+// list of the error messages. The header lives in src/core, the lowest layer, so that every layer
+// can use it.
 
 #include <array>
 #include <cstddef>
@@ -14,22 +12,13 @@
 
 #include <fmt/format.h>
 
+#include "hyst/core/enum_names.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst::detail {
 
-// Each value of an enumeration with its name, in the order the error messages list them.
-template <class E, std::size_t N>
-using EnumNames = std::array<std::pair<E, std::string_view>, N>;
-
-// The name of `value`; "unknown" for a value that is not in the table.
-template <class E, std::size_t N>
-constexpr std::string_view name_of(E value, const EnumNames<E, N>& names) {
-  for (const auto& [known, name] : names) {
-    if (known == value) return name;
-  }
-  return "unknown";
-}
+using hyst::EnumNames;
+using hyst::name_of;
 
 // The value named `text`, if the table has that name.
 template <class E, std::size_t N>
