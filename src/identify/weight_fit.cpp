@@ -64,4 +64,35 @@ OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offse
   return solution;
 }
 
+FitReport weight_fit_report(std::string_view name, std::string method, const OffsetNnls& solution,
+                            std::size_t parameters, std::span<const double> measured,
+                            std::span<const double> predicted) {
+  FitReport report;
+  report.model = std::string(name);
+  report.method = std::move(method);
+  report.termination = solution.nnls.termination;
+  std::size_t zero = 0;
+  for (Eigen::Index j = 0; j < solution.x.size(); ++j)
+    zero += solution.x[j] == 0.0 ? 1 : 0;
+  report.message = fmt::format(
+      "{}; {} of {} unknowns at their lower bound",
+      solution.nnls.converged()
+          ? fmt::format("KKT conditions hold within tolerance {:.3g}", solution.nnls.tolerance)
+          : solution.nnls.message,
+      zero, solution.x.size());
+  report.iterations = solution.nnls.iterations;
+  report.parameters = parameters;
+  double mean = 0.0;
+  for (double y : measured)
+    mean += y;
+  mean /= static_cast<double>(measured.size());
+  for (std::size_t k = 0; k < predicted.size(); ++k) {
+    const double e = measured[k] - predicted[k];
+    report.final_cost += 0.5 * e * e;
+    report.initial_cost += 0.5 * (measured[k] - mean) * (measured[k] - mean);
+  }
+  report.fit = error_metrics(measured, predicted);
+  return report;
+}
+
 }  // namespace hyst::detail

@@ -41,38 +41,21 @@ OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offse
 // Range max - min of the samples.
 double range_of(std::span<const double> samples);
 
-// The report of a fitted model: termination from the NNLS, costs and error metrics on the fit
-// part (simulated from `state`, which is advanced) and on the validation part (continuing).
+// The report of a weight fit from its NNLS solution and the model's prediction of the fitted
+// samples: termination, costs (final against the output's own variance) and fit metrics.
+FitReport weight_fit_report(std::string_view name, std::string method, const OffsetNnls& solution,
+                            std::size_t parameters, std::span<const double> measured,
+                            std::span<const double> predicted);
+
+// The same for one record: the fit part simulated from `state` (which is advanced), then the
+// validation part continuing from there.
 template <class Model>
 FitReport weight_fit_report(std::string_view name, std::string method, const OffsetNnls& solution,
                             std::size_t parameters, const Model& model, typename Model::State state,
                             const RecordParts& parts, std::chrono::steady_clock::time_point start) {
-  FitReport report;
-  report.model = std::string(name);
-  report.method = std::move(method);
-  report.termination = solution.nnls.termination;
-  std::size_t zero = 0;
-  for (Eigen::Index j = 0; j < solution.x.size(); ++j)
-    zero += solution.x[j] == 0.0 ? 1 : 0;
-  report.message = fmt::format(
-      "{}; {} of {} unknowns at their lower bound",
-      solution.nnls.converged()
-          ? fmt::format("KKT conditions hold within tolerance {:.3g}", solution.nnls.tolerance)
-          : solution.nnls.message,
-      zero, solution.x.size());
-  report.iterations = solution.nnls.iterations;
-  report.parameters = parameters;
   const auto predicted = simulate(model, state, parts.fit_input);
-  double mean = 0.0;
-  for (double y : parts.fit_output)
-    mean += y;
-  mean /= static_cast<double>(parts.fit_output.size());
-  for (std::size_t k = 0; k < predicted.size(); ++k) {
-    const double e = parts.fit_output[k] - predicted[k];
-    report.final_cost += 0.5 * e * e;
-    report.initial_cost += 0.5 * (parts.fit_output[k] - mean) * (parts.fit_output[k] - mean);
-  }
-  report.fit = error_metrics(parts.fit_output, predicted);
+  FitReport report =
+      weight_fit_report(name, std::move(method), solution, parameters, parts.fit_output, predicted);
   if (!parts.validation_input.empty()) {
     const auto validation = simulate(model, state, parts.validation_input);
     report.validation = error_metrics(parts.validation_output, validation);

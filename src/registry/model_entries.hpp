@@ -14,6 +14,7 @@ ModelEntry krasnoselskii_pokrovskii_entry();
 ModelEntry maxwell_slip_entry();
 ModelEntry modified_prandtl_ishlinskii_entry();
 ModelEntry rate_dependent_prandtl_ishlinskii_entry();
+ModelEntry prandtl_ishlinskii_creep_entry();
 ModelEntry bouc_wen_entry();
 ModelEntry bouc_wen_oscillator_entry();
 ModelEntry duhem_entry();

@@ -22,7 +22,9 @@ using EnumNames = std::array<std::pair<E, std::string_view>, N>;
 //! An enumeration whose namespace defines `enumerator_names(E)` (found by argument-dependent
 //! lookup).
 template <class E>
-concept NamedEnum = std::is_enum_v<E> && requires(E value) { enumerator_names(value); };
+concept NamedEnum = std::is_enum_v<E> && requires(E value) {
+  enumerator_names(value);
+};
 
 //! The name table of a named enumeration.
 template <NamedEnum E>

@@ -1,0 +1,59 @@
+#pragma once
+//! \file
+//! Identification of the PI model with creep (prandtl_ishlinskii_creep.hpp) from records sampled
+//! at one sample time: for fixed thresholds r_j and time constants tau_i the plays w_j[k] and the
+//! creep elements z_ij[k] follow from the input alone, and the output is linear in all weights,
+//!
+//!     min sum_records sum_k (y_meas[k] - y_off - sum_j p_j w_j[k] - sum_ij c_ij z_ij[k])^2
+//!     subject to p_0 >= eps, p_j >= 0 (j >= 1), c_ij >= 0,
+//!
+//! solved together by NNLS (hysteresis and creep weights at once, Kuhnen's approach). Records of
+//! the same actuator at different rates identify the creep: a slow triangle creeps further than a
+//! fast one between the same voltages, and only the creep part can tell them apart. Every record
+//! starts at rest at its first input (plays and creep elements settled there).
+//!
+//! Defaults: thresholds as for the PI fit (uniform below half the input range of all records);
+//! time constants log-spaced from 10 Ts to the longest record's duration, `lags` of them (a creep
+//! slower than the records cannot be identified from them).
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "hyst/identify/fit_record.hpp"
+#include "hyst/identify/fit_report.hpp"
+#include "hyst/models/prandtl_ishlinskii_creep.hpp"
+
+namespace hyst {
+
+struct PiCreepFitOptions {
+  std::size_t operators = 10;            //!< plays when `thresholds` is empty, >= 1
+  std::vector<double> thresholds{};      //!< r_j, 0 = r_0 < ...; empty = uniform (as the PI fit)
+  std::size_t lags = 5;                  //!< time constants when `time_constants` is empty, >= 1
+  std::vector<double> time_constants{};  //!< tau_i [s], increasing; empty = log-spaced
+  double sample_time = 1.0;              //!< Ts > 0 [s] of every record
+  bool fit_offset = true;
+  double min_linear_weight = 1e-9;  //!< p_0 >= this * (y range / v range), > 0
+  double validate_fraction = 0.0;   //!< one record: held out at its end, [0, 1)
+};
+
+struct PiCreepFit {
+  PrandtlIshlinskiiCreep model;
+  //! The state the fit started the (first) record from: at rest at its first input.
+  PrandtlIshlinskiiCreep::State initial_state;
+  FitReport report;  //!< model "pi_creep", method "nnls (Lawson-Hanson)"
+};
+
+//! One record; the last `validate_fraction` of it is held out and reported as validation.
+//! Throws hyst::Error for invalid data or options.
+PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const double> input,
+                                        std::span<const double> output,
+                                        const PiCreepFitOptions& options = {});
+
+//! Several records of one actuator (e.g. one triangle at several rates), fitted together; the
+//! report's fit metrics are over all of them. `validate_fraction` must be 0: hold out a record
+//! instead. Throws hyst::Error naming the record ("records[1]") for invalid data.
+PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const FitRecord> records,
+                                        const PiCreepFitOptions& options = {});
+
+}  // namespace hyst
