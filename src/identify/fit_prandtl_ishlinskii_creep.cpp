@@ -34,15 +34,36 @@ void check_options(const PiCreepFitOptions& options) {
   }
 }
 
+// The sample time of each record.
+std::vector<double> sample_times_of(std::span<const FitRecord> records,
+                                    const PiCreepFitOptions& options) {
+  if (options.sample_times.empty()) return std::vector<double>(records.size(), options.sample_time);
+  if (options.sample_times.size() != records.size()) {
+    throw Error(fmt::format("{}: {} sample times for {} records (one per record, or none)", kFit,
+                            options.sample_times.size(), records.size()),
+                "sample_times");
+  }
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const double ts = options.sample_times[r];
+    if (!std::isfinite(ts) || !(ts > 0.0)) {
+      throw Error(fmt::format("{}: sample_times[{}] = {} must be finite and > 0", kFit, r, ts),
+                  fmt::format("sample_times[{}]", r));
+    }
+  }
+  return options.sample_times;
+}
+
 // The model's structure with zero weights: thresholds and time constants from the options or
 // their defaults for these records.
 PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
+                                    std::span<const double> sample_times,
                                     const PiCreepFitOptions& options) {
   std::vector<double> inputs;
-  std::size_t longest = 0;
-  for (const auto& record : records) {
-    inputs.insert(inputs.end(), record.input.begin(), record.input.end());
-    longest = std::max(longest, record.input.size());
+  double duration = 0.0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    inputs.insert(inputs.end(), records[r].input.begin(), records[r].input.end());
+    duration =
+        std::max(duration, static_cast<double>(records[r].input.size()) * sample_times[r]);
   }
   PrandtlIshlinskiiCreep::Params params;
   params.thresholds = options.thresholds.empty()
@@ -50,8 +71,7 @@ PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
                           : options.thresholds;
   params.time_constants = options.time_constants;
   if (params.time_constants.empty()) {
-    const double shortest = 10.0 * options.sample_time;
-    const double duration = static_cast<double>(longest) * options.sample_time;
+    const double shortest = 10.0 * *std::min_element(sample_times.begin(), sample_times.end());
     if (!(duration > shortest)) {
       throw Error(fmt::format("{}: the longest record lasts {} s, not longer than 10 sample times "
                               "({} s): too short to identify creep",
@@ -61,8 +81,17 @@ PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
   }
   params.weights.assign(params.thresholds.size(), 0.0);
   params.creep_weights.assign(params.thresholds.size() * params.time_constants.size(), 0.0);
-  params.sample_time = options.sample_time;
+  params.sample_time = sample_times.front();
   return PrandtlIshlinskiiCreep(std::move(params));
+}
+
+// The state a record starts from, for the model discretised at the record's sample time.
+PrandtlIshlinskiiCreep::State start_state(const PrandtlIshlinskiiCreep& model,
+                                          std::span<const double> input,
+                                          const PiCreepFitOptions& options) {
+  return options.initial_state == PiFitOptions::InitialState::periodic
+             ? model.periodic_state(input)
+             : model.initial_state();
 }
 
 struct Solved {
@@ -73,7 +102,8 @@ struct Solved {
 
 // Columns [w_j, z_ij] of every record from rest at its first input; p_0 = eps + q.
 Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& options) {
-  const PrandtlIshlinskiiCreep probe = structure_of(records, options);
+  const auto sample_times = sample_times_of(records, options);
+  const PrandtlIshlinskiiCreep probe = structure_of(records, sample_times, options);
   const std::size_t n = probe.size();
   const auto columns = static_cast<Eigen::Index>(n + probe.params().creep_weights.size());
   Eigen::Index rows = 0;
@@ -93,10 +123,12 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
   Eigen::MatrixXd A = detail::regressor_matrix(rows, columns, kFit);
   Eigen::VectorXd b(rows);
   Eigen::Index row = 0;
-  for (const auto& record : records) {
-    auto state = probe.state_at_rest(record.input.front());
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& record = records[r];
+    const auto discretised = probe.at_sample_time(sample_times[r]);
+    auto state = start_state(discretised, record.input, options);
     for (std::size_t k = 0; k < record.input.size(); ++k, ++row) {
-      probe.step(state, record.input[k]);
+      discretised.step(state, record.input[k]);
       A.row(row).head(static_cast<Eigen::Index>(n)) =
           Eigen::Map<const Eigen::RowVectorXd>(state.play.data(), static_cast<Eigen::Index>(n));
       A.row(row).tail(columns - static_cast<Eigen::Index>(n)) = Eigen::Map<const Eigen::RowVectorXd>(
@@ -124,7 +156,7 @@ PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const double> input,
   const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
   const FitRecord record{parts.fit_input, parts.fit_output};
   auto solved = solve(std::span(&record, 1), options);
-  auto initial_state = solved.model.state_at_rest(parts.fit_input.front());
+  auto initial_state = start_state(solved.model, parts.fit_input, options);
   PiCreepFit result{std::move(solved.model), initial_state, {}};
   result.report =
       detail::weight_fit_report("pi_creep", "nnls (Lawson-Hanson)", solved.solution,
@@ -146,15 +178,18 @@ PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const FitRecord> records,
   for (std::size_t r = 0; r < records.size(); ++r)
     check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
   auto solved = solve(records, options);
+  const auto sample_times = sample_times_of(records, options);
   std::vector<double> measured;
   std::vector<double> predicted;
-  for (const auto& record : records) {
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& record = records[r];
     measured.insert(measured.end(), record.output.begin(), record.output.end());
-    auto state = solved.model.state_at_rest(record.input.front());
-    const auto y = simulate(solved.model, state, record.input);
+    const auto discretised = solved.model.at_sample_time(sample_times[r]);
+    auto state = start_state(discretised, record.input, options);
+    const auto y = simulate(discretised, state, record.input);
     predicted.insert(predicted.end(), y.begin(), y.end());
   }
-  auto initial_state = solved.model.state_at_rest(records.front().input.front());
+  auto initial_state = start_state(solved.model, records.front().input, options);
   PiCreepFit result{std::move(solved.model), std::move(initial_state), {}};
   result.report = detail::weight_fit_report("pi_creep", "nnls (Lawson-Hanson)", solved.solution,
                                             solved.parameters, measured, predicted);

@@ -61,6 +61,12 @@ PrandtlIshlinskiiCreep::PrandtlIshlinskiiCreep(Params params)
     decay_.push_back(std::exp(-params_.sample_time / tau));
 }
 
+PrandtlIshlinskiiCreep PrandtlIshlinskiiCreep::at_sample_time(double sample_time) const {
+  auto params = params_;
+  params.sample_time = sample_time;
+  return PrandtlIshlinskiiCreep(std::move(params));
+}
+
 PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::initial_state() const {
   return state_at_rest(0.0);
 }
@@ -68,6 +74,34 @@ PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::initial_state() const {
 PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::state_at_rest(double input) const {
   require_finite(input, "PI with creep rest input v0");
   return State{std::vector<double>(size(), input), std::vector<double>(size() * lags(), input)};
+}
+
+PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::periodic_state(
+    std::span<const double> period) const {
+  require_not_empty(period.size(), "PI with creep periodic input");
+  require_finite(period, "PI with creep periodic input");
+  State state = initial_state();
+  for (double v : period)
+    step(state, v);  // the plays are periodic from here on
+  std::vector<double> play = state.play;
+  const std::size_t n = size();
+  std::vector<double> weighted(n * lags(), 0.0);  // sum_k a^(N-k) (1 - a) w_j[k]
+  for (double v : period) {
+    for (std::size_t j = 0; j < n; ++j)
+      play[j] = play_step(v, params_.thresholds[j], play[j]);
+    for (std::size_t i = 0; i < lags(); ++i) {
+      for (std::size_t j = 0; j < n; ++j)
+        weighted[i * n + j] = decay_[i] * weighted[i * n + j] + (1.0 - decay_[i]) * play[j];
+    }
+  }
+  const auto samples = static_cast<double>(period.size());
+  for (std::size_t i = 0; i < lags(); ++i) {
+    // 1 - a^N, accurate also for a slow lag (a close to 1)
+    const double settle = -std::expm1(-samples * params_.sample_time / params_.time_constants[i]);
+    for (std::size_t j = 0; j < n; ++j)
+      state.creep[i * n + j] = weighted[i * n + j] / settle;
+  }
+  return state;
 }
 
 PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::make_state(std::vector<double> play,

@@ -82,6 +82,8 @@ FieldTable<PiCreepFitOptions> prandtl_ishlinskii_creep_fit_option_table() {
       .add("time_constants", &O::time_constants, "s",
            "fixed creep time constants (default: log-spaced from 10 Ts to the record's length)")
       .add("sample_time", &O::sample_time, "s", "Ts of the record")
+      .add("initial_state", &O::initial_state, pi_initial_state_from_string,
+           "virgin (plays and lags at 0) or periodic (the record is one period in steady state)")
       .add("fit_offset", &O::fit_offset, "", "fit the output offset")
       .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
 }

@@ -74,6 +74,28 @@ TEST(PrandtlIshlinskiiCreep, RestStateStaysAtRestAndAStepSettlesAtTheFullGain) {
   EXPECT_NEAR(y, 0.25 + (1.0 + 0.2 + 0.05) * 1.0 + (0.5 + 0.1 + 0.3) * 0.5, 1e-12);
 }
 
+TEST(PrandtlIshlinskiiCreep, PeriodicStateIsWhereManyPeriodsConverge) {
+  const PrandtlIshlinskiiCreep model(two_plays_two_lags());
+  std::vector<double> period(150);
+  for (std::size_t k = 0; k < period.size(); ++k)
+    period[k] = 0.3 + 1.2 * std::sin(2 * std::numbers::pi * static_cast<double>(k + 1) / 150.0) +
+                0.4 * std::sin(6 * std::numbers::pi * static_cast<double>(k + 1) / 150.0);
+  const auto periodic = model.periodic_state(period);
+  // One period returns to it.
+  auto state = periodic;
+  simulate(model, state, period);
+  for (std::size_t ij = 0; ij < state.creep.size(); ++ij)
+    EXPECT_NEAR(state.creep[ij], periodic.creep[ij], 1e-13);
+  EXPECT_EQ(state.play, periodic.play);
+  // A second algorithm: run 400 periods (1.5 s each, 3 time constants of the slow lag per 1.5 s).
+  auto run_in = model.initial_state();
+  for (int p = 0; p < 400; ++p)
+    simulate(model, run_in, period);
+  for (std::size_t ij = 0; ij < state.creep.size(); ++ij)
+    EXPECT_NEAR(run_in.creep[ij], periodic.creep[ij], 1e-12);
+  EXPECT_HYST_ERROR(model.periodic_state({}), "PI with creep periodic input");
+}
+
 TEST(PrandtlIshlinskiiCreep, LogarithmicCreepLawFollowsLog10OfTime) {
   const double gamma = 0.02;
   const double t0 = 0.1;

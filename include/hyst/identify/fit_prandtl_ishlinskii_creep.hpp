@@ -10,16 +10,19 @@
 //! solved together by NNLS (hysteresis and creep weights at once, Kuhnen's approach). Records of
 //! the same actuator at different rates identify the creep: a slow triangle creeps further than a
 //! fast one between the same voltages, and only the creep part can tell them apart. Every record
-//! starts at rest at its first input (plays and creep elements settled there).
+//! starts from the stated initial state: `virgin` (every play and lag at 0, as the PI fit) or
+//! `periodic` (each record is one period in steady state: PrandtlIshlinskiiCreep::periodic_state()
+//! of its input at its sample time).
 //!
 //! Defaults: thresholds as for the PI fit (uniform below half the input range of all records);
-//! time constants log-spaced from 10 Ts to the longest record's duration, `lags` of them (a creep
-//! slower than the records cannot be identified from them).
+//! time constants log-spaced from 10 Ts (the shortest sample time) to the longest record's
+//! duration, `lags` of them (a creep slower than the records cannot be identified from them).
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
+#include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/prandtl_ishlinskii_creep.hpp"
@@ -31,15 +34,21 @@ struct PiCreepFitOptions {
   std::vector<double> thresholds{};      //!< r_j, 0 = r_0 < ...; empty = uniform (as the PI fit)
   std::size_t lags = 5;                  //!< time constants when `time_constants` is empty, >= 1
   std::vector<double> time_constants{};  //!< tau_i [s], increasing; empty = log-spaced
-  double sample_time = 1.0;              //!< Ts > 0 [s] of every record
+  double sample_time = 1.0;              //!< Ts > 0 [s] of every record (when sample_times is empty)
+  //! Several records: Ts > 0 [s] of each (records at different rates need not share one; the
+  //! lags are discretised exactly for each). Empty: `sample_time` for all. The fitted model is
+  //! discretised at the first record's (PrandtlIshlinskiiCreep::at_sample_time() for others).
+  std::vector<double> sample_times{};
   bool fit_offset = true;
   double min_linear_weight = 1e-9;  //!< p_0 >= this * (y range / v range), > 0
   double validate_fraction = 0.0;   //!< one record: held out at its end, [0, 1)
+  //! The PI fit's vocabulary: virgin or periodic (see the file comment).
+  PiFitOptions::InitialState initial_state = PiFitOptions::InitialState::virgin;
 };
 
 struct PiCreepFit {
   PrandtlIshlinskiiCreep model;
-  //! The state the fit started the (first) record from: at rest at its first input.
+  //! The state the fit started the (first) record from.
   PrandtlIshlinskiiCreep::State initial_state;
   FitReport report;  //!< model "pi_creep", method "nnls (Lawson-Hanson)"
 };

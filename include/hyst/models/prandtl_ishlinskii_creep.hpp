@@ -35,6 +35,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "hyst/core/assert.hpp"
@@ -71,10 +72,21 @@ class PrandtlIshlinskiiCreep {
   //! a_i = exp(-Ts / tau_i), the lags' decay per sample.
   const std::vector<double>& decay() const { return decay_; }
 
+  //! The same model discretised at another sample time: the lags are continuous-time elements,
+  //! so one fitted model runs records sampled at any rate. Throws hyst::Error unless Ts > 0.
+  PrandtlIshlinskiiCreep at_sample_time(double sample_time) const;
+
   //! Every play and creep element at 0.
   State initial_state() const;
   //! At rest at input v0 for ever: every play and creep element at v0.
   State state_at_rest(double input) const;
+  //! The periodic steady state of `period` (one period of a periodic input, its last sample
+  //! followed again by its first): the state from which one period returns to the same state.
+  //! Exact, not a run-in: the plays reach it after one period (a composition of clamps is
+  //! idempotent), and each lag then has the closed form z_ij = sum_k a_i^(N-k) (1 - a_i)
+  //! w_j[k] / (1 - a_i^N) over the period's play outputs. Throws hyst::Error for an empty period
+  //! or a sample that is not finite.
+  State periodic_state(std::span<const double> period) const;
   //! A given state; throws hyst::Error for a wrong size, a value that is not finite, or plays no
   //! input history reaches (as PrandtlIshlinskii::make_state).
   State make_state(std::vector<double> play, std::vector<double> creep) const;
