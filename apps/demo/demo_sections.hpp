@@ -19,6 +19,11 @@ std::string actuator_section(const std::filesystem::path& config_file,
 // internal loops (seed_comparison_section.cpp); needs no data.
 std::string seed_comparison_section(const std::filesystem::path& folder);
 
+// The PI model with creep against the rate-independent PI: fitted on one triangle at 1 and
+// 0.1 Hz, predicting it at 0.01 Hz (creep_section.cpp).
+std::string creep_section(const std::filesystem::path& data_dir,
+                          const std::filesystem::path& folder);
+
 // Every model with a fitter ranked on every measured record that has an input and an output
 // (model_comparison_section.cpp): tables, plots and an HTML report per record.
 std::string model_comparison_section(const std::filesystem::path& data_dir,

@@ -11,8 +11,8 @@ namespace hyst::data {
 
 double uniform_sample_time(std::span<const double> times, std::string_view what) {
   if (times.size() < 2) {
-    throw Error(fmt::format("{}: {} time values, a sample time needs at least 2", what,
-                            times.size()));
+    throw Error(
+        fmt::format("{}: {} time values, a sample time needs at least 2", what, times.size()));
   }
   for (std::size_t k = 0; k < times.size(); ++k) {
     if (!std::isfinite(times[k])) {
@@ -28,10 +28,11 @@ double uniform_sample_time(std::span<const double> times, std::string_view what)
     const double actual = times[k] - times[k - 1];
     const double rounding = 1e-6 * std::max(std::abs(times[k]), std::abs(times[k - 1]));
     if (std::abs(actual - step) > 1e-3 * step + rounding) {
-      throw Error(fmt::format("{}: the sampling is not uniform: time[{}] - time[{}] = {:.6g} s but "
-                              "the mean step is {:.6g} s (resample the record to a uniform time "
-                              "grid first)",
-                              what, k, k - 1, actual, step));
+      throw Error(
+          fmt::format("{}: the sampling is not uniform: time[{}] - time[{}] = {:.6g} s but "
+                      "the mean step is {:.6g} s (resample the record to a uniform time "
+                      "grid first)",
+                      what, k, k - 1, actual, step));
     }
   }
   return step;

@@ -29,9 +29,6 @@ void check_options(const PiCreepFitOptions& options) {
         fmt::format("{}: sample_time = {} must be finite and > 0", kFit, options.sample_time),
         "sample_time");
   }
-  if (options.time_constants.empty() && options.lags == 0) {
-    throw Error(fmt::format("{}: lags = 0 must be >= 1 (or give time_constants)", kFit), "lags");
-  }
 }
 
 // The sample time of each record.
@@ -62,20 +59,19 @@ PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
   double duration = 0.0;
   for (std::size_t r = 0; r < records.size(); ++r) {
     inputs.insert(inputs.end(), records[r].input.begin(), records[r].input.end());
-    duration =
-        std::max(duration, static_cast<double>(records[r].input.size()) * sample_times[r]);
+    duration = std::max(duration, static_cast<double>(records[r].input.size()) * sample_times[r]);
   }
   PrandtlIshlinskiiCreep::Params params;
-  params.thresholds = options.thresholds.empty()
-                          ? pi_default_thresholds(inputs, options.operators)
-                          : options.thresholds;
+  params.thresholds = options.thresholds.empty() ? pi_default_thresholds(inputs, options.operators)
+                                                 : options.thresholds;
   params.time_constants = options.time_constants;
-  if (params.time_constants.empty()) {
+  if (params.time_constants.empty() && options.lags > 0) {
     const double shortest = 10.0 * *std::min_element(sample_times.begin(), sample_times.end());
     if (!(duration > shortest)) {
-      throw Error(fmt::format("{}: the longest record lasts {} s, not longer than 10 sample times "
-                              "({} s): too short to identify creep",
-                              kFit, duration, shortest));
+      throw Error(
+          fmt::format("{}: the longest record lasts {} s, not longer than 10 sample times "
+                      "({} s): too short to identify creep",
+                      kFit, duration, shortest));
     }
     params.time_constants = log_spaced_time_constants(shortest, duration, options.lags);
   }
@@ -89,9 +85,8 @@ PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
 PrandtlIshlinskiiCreep::State start_state(const PrandtlIshlinskiiCreep& model,
                                           std::span<const double> input,
                                           const PiCreepFitOptions& options) {
-  return options.initial_state == PiFitOptions::InitialState::periodic
-             ? model.periodic_state(input)
-             : model.initial_state();
+  return options.initial_state == PiFitOptions::InitialState::periodic ? model.periodic_state(input)
+                                                                       : model.initial_state();
 }
 
 struct Solved {
@@ -115,8 +110,8 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
     outputs.insert(outputs.end(), record.output.begin(), record.output.end());
   }
   if (rows < columns + 2) {
-    throw Error(fmt::format("{}: {} samples, fewer than unknowns + 2 = {}", kFit, rows,
-                            columns + 2));
+    throw Error(
+        fmt::format("{}: {} samples, fewer than unknowns + 2 = {}", kFit, rows, columns + 2));
   }
   const double eps =
       options.min_linear_weight * detail::range_of(outputs) / detail::range_of(inputs);
@@ -131,8 +126,9 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
       discretised.step(state, record.input[k]);
       A.row(row).head(static_cast<Eigen::Index>(n)) =
           Eigen::Map<const Eigen::RowVectorXd>(state.play.data(), static_cast<Eigen::Index>(n));
-      A.row(row).tail(columns - static_cast<Eigen::Index>(n)) = Eigen::Map<const Eigen::RowVectorXd>(
-          state.creep.data(), static_cast<Eigen::Index>(state.creep.size()));
+      A.row(row).tail(columns - static_cast<Eigen::Index>(n)) =
+          Eigen::Map<const Eigen::RowVectorXd>(state.creep.data(),
+                                               static_cast<Eigen::Index>(state.creep.size()));
       b[row] = record.output[k] - eps * state.play[0];
     }
   }

@@ -9,8 +9,8 @@
 namespace hyst {
 namespace {
 
-InversePrandtlIshlinskii instantaneous_inverse_of(const PrandtlIshlinskiiCreep& model,
-                                                  const InversePrandtlIshlinskii::Options& options) {
+InversePrandtlIshlinskii instantaneous_inverse_of(
+    const PrandtlIshlinskiiCreep& model, const InversePrandtlIshlinskii::Options& options) {
   try {
     return InversePrandtlIshlinskii(
         PrandtlIshlinskii({model.params().thresholds, model.instantaneous_weights(), 0.0}),

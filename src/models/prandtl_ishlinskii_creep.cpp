@@ -39,11 +39,11 @@ void validate_creep(const PrandtlIshlinskiiCreep::Params& p) {
   }
   const std::size_t expected = tau.size() * p.thresholds.size();
   if (p.creep_weights.size() != expected) {
-    throw Error(fmt::format("{} has {} creep weights but needs {} ({} time constants x {} "
-                            "thresholds, row-major)",
-                            kCreepModel, p.creep_weights.size(), expected, tau.size(),
-                            p.thresholds.size()),
-                "creep_weights");
+    throw Error(
+        fmt::format("{} has {} creep weights but needs {} ({} time constants x {} "
+                    "thresholds, row-major)",
+                    kCreepModel, p.creep_weights.size(), expected, tau.size(), p.thresholds.size()),
+        "creep_weights");
   }
   for (std::size_t ij = 0; ij < expected; ++ij) {
     rules.at_least(p.creep_weights[ij], 0.0, fmt::format("creep weight c[{}]", ij),
@@ -135,14 +135,16 @@ std::vector<double> PrandtlIshlinskiiCreep::instantaneous_weights() const {
 std::vector<double> log_spaced_time_constants(double shortest, double longest, std::size_t count) {
   if (!(std::isfinite(shortest) && std::isfinite(longest) && shortest > 0.0 &&
         longest >= shortest)) {
-    throw Error(fmt::format("log-spaced time constants: shortest = {} and longest = {} must be "
-                            "finite with 0 < shortest <= longest",
-                            shortest, longest));
+    throw Error(
+        fmt::format("log-spaced time constants: shortest = {} and longest = {} must be "
+                    "finite with 0 < shortest <= longest",
+                    shortest, longest));
   }
   if (count == 0 || (count > 1 && !(longest > shortest))) {
-    throw Error(fmt::format("log-spaced time constants: count = {} must be >= 1, and 1 when "
-                            "shortest = longest = {}",
-                            count, shortest));
+    throw Error(
+        fmt::format("log-spaced time constants: count = {} must be >= 1, and 1 when "
+                    "shortest = longest = {}",
+                    count, shortest));
   }
   std::vector<double> tau(count, shortest);
   for (std::size_t i = 1; i < count; ++i) {
@@ -165,12 +167,12 @@ PrandtlIshlinskiiCreep::Params pi_logarithmic_creep(const PrandtlIshlinskii::Par
   // per decade of t: S(t) = m (log10(t / tau_0) + euler_gamma / ln 10) + 1/2 inside the covered
   // range (the integral of 1 - exp(-10^-x) minus a unit step is euler_gamma / ln 10, the 1/2 is the
   // sum's end correction). tau_0 = t0 e^euler_gamma 10^(1 / (2 m)) puts its zero at t0.
-  const double tau0 = t0 * std::exp(std::numbers::egamma) *
-                      std::pow(10.0, 0.5 / static_cast<double>(per_decade));
+  const double tau0 =
+      t0 * std::exp(std::numbers::egamma) * std::pow(10.0, 0.5 / static_cast<double>(per_decade));
   const std::size_t count = decades * per_decade + 1;
   PrandtlIshlinskiiCreep::Params params{pi.thresholds, pi.weights, {}, {}, sample_time, pi.offset};
-  params.time_constants = log_spaced_time_constants(
-      tau0, tau0 * std::pow(10.0, static_cast<double>(decades)), count);
+  params.time_constants =
+      log_spaced_time_constants(tau0, tau0 * std::pow(10.0, static_cast<double>(decades)), count);
   for (std::size_t i = 0; i < count; ++i) {
     for (double p : pi.weights)
       params.creep_weights.push_back(gamma * p / static_cast<double>(per_decade));

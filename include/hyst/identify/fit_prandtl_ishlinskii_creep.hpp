@@ -30,11 +30,13 @@
 namespace hyst {
 
 struct PiCreepFitOptions {
-  std::size_t operators = 10;            //!< plays when `thresholds` is empty, >= 1
-  std::vector<double> thresholds{};      //!< r_j, 0 = r_0 < ...; empty = uniform (as the PI fit)
-  std::size_t lags = 5;                  //!< time constants when `time_constants` is empty, >= 1
+  std::size_t operators = 10;        //!< plays when `thresholds` is empty, >= 1
+  std::vector<double> thresholds{};  //!< r_j, 0 = r_0 < ...; empty = uniform (as the PI fit)
+  //! Time constants when `time_constants` is empty; 0: no creep, the rate-independent PI fitted
+  //! the same way (the yardstick of a creep fit).
+  std::size_t lags = 5;
   std::vector<double> time_constants{};  //!< tau_i [s], increasing; empty = log-spaced
-  double sample_time = 1.0;              //!< Ts > 0 [s] of every record (when sample_times is empty)
+  double sample_time = 1.0;  //!< Ts > 0 [s] of every record (when sample_times is empty)
   //! Several records: Ts > 0 [s] of each (records at different rates need not share one; the
   //! lags are discretised exactly for each). Empty: `sample_time` for all. The fitted model is
   //! discretised at the first record's (PrandtlIshlinskiiCreep::at_sample_time() for others).

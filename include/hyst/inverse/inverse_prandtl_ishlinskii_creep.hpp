@@ -7,9 +7,9 @@
 //!     m[k] = sum_ij c_ij a_i z_ij[k-1]   (fixed by the past),
 //!
 //! so the input for a target y_d is the analytic inverse PI of the weights ph_j applied to
-//! y_d - m[k] (the creep part inverted exactly, the hysteresis by its inverse operator); the model's
-//! state is then advanced with that input. It exists when ph_0 > 0 and every partial sum of the
-//! ph_j is > 0, which a fit (p_0 > 0, all other weights >= 0) guarantees. An input outside
+//! y_d - m[k] (the creep part inverted exactly, the hysteresis by its inverse operator); the
+//! model's state is then advanced with that input. It exists when ph_0 > 0 and every partial sum of
+//! the ph_j is > 0, which a fit (p_0 > 0, all other weights >= 0) guarantees. An input outside
 //! [input_min, input_max] is limited and reported; the state follows the limited input.
 
 #include <cstddef>
