@@ -31,8 +31,8 @@ struct RatePeriod {
 
 std::vector<RatePeriod> read_periods(const hyst::io::AixacctFile& file, const std::string& column) {
   std::vector<RatePeriod> periods;
-  for (const auto& [table, label] :
-       std::vector<std::pair<std::size_t, std::string>>{{6, "1 Hz"}, {1, "0.1 Hz"}, {2, "0.01 Hz"}}) {
+  for (const auto& [table, label] : std::vector<std::pair<std::size_t, std::string>>{
+           {6, "1 Hz"}, {1, "0.1 Hz"}, {2, "0.01 Hz"}}) {
     const auto& measurement = file.measurement(table);
     const double ts = hyst::data::uniform_sample_time(
         measurement.column("Time", file.source).values,
@@ -71,16 +71,16 @@ struct CaseRows {
 };
 
 CaseRows compare_on(const hyst::io::AixacctFile& file, const OutputCase& output,
-                       const fs::path& folder) {
+                    const fs::path& folder) {
   const auto periods = read_periods(file, output.column);
   const std::vector<hyst::FitRecord> fit_records{{periods[0].voltage, periods[0].output},
                                                  {periods[1].voltage, periods[1].output}};
   std::string table;
-  hyst::plot::Figure loops{fmt::format("{} at 0.01 Hz, predicted from 1 and 0.1 Hz", output.name),
-                           "voltage V+ [V]",
-                           output.name,
-                           {{"measured", periods[2].voltage, periods[2].output,
-                             hyst::plot::Series::Style::points}}};
+  hyst::plot::Figure loops{
+      fmt::format("{} at 0.01 Hz, predicted from 1 and 0.1 Hz", output.name),
+      "voltage V+ [V]",
+      output.name,
+      {{"measured", periods[2].voltage, periods[2].output, hyst::plot::Series::Style::points}}};
   const std::size_t default_lags = hyst::PiCreepFitOptions{}.lags;
   for (const std::size_t lags : {std::size_t{0}, default_lags}) {
     hyst::PiCreepFitOptions options;
@@ -94,8 +94,7 @@ CaseRows compare_on(const hyst::io::AixacctFile& file, const OutputCase& output,
     std::string row = fmt::format("| {} | {} | {} |", output.name, model, fit.report.parameters);
     for (const auto& period : periods) {
       const auto predicted = predict(fit.model, period, output.zeroed);
-      row += fmt::format(" {:.2f} |",
-                         hyst::error_metrics(period.output, predicted).nrmse_percent);
+      row += fmt::format(" {:.2f} |", hyst::error_metrics(period.output, predicted).nrmse_percent);
       if (&period == &periods[2]) {
         loops.series.push_back({model, period.voltage, predicted});
       }

@@ -9,11 +9,14 @@
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/preisach.hpp"
 
 namespace hyst::detail {
 
 CModelCode emit_c(const PrandtlIshlinskii& model, const PrandtlIshlinskii::State& state,
+                  const CWriter& writer, const CExportOptions& options);
+CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
                   const CWriter& writer, const CExportOptions& options);
 CModelCode emit_c(const ModifiedPrandtlIshlinskii& model,
                   const ModifiedPrandtlIshlinskii::State& state, const CWriter& writer,

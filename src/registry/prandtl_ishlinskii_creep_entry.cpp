@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "c_code_capability.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii_creep.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/prandtl_ishlinskii_creep.hpp"
@@ -100,6 +101,7 @@ ModelEntry prandtl_ishlinskii_creep_entry() {
       "PI with Kuhnen creep: plays driving first-order lags (exactly discretised), hysteresis and "
       "creep weights by one NNLS; exact inverse");
   set_fitter<PiCreepCodec>(entry, prandtl_ishlinskii_creep_fit_option_table(), &fit_one_record);
+  entry.c_code = c_code_of<PiCreepCodec>();
   entry.example_params = {{"thresholds", {0.0, 0.25, 0.5}},
                           {"weights", {1.0, 0.5, 0.25}},
                           {"time_constants", {0.01, 0.1}},

@@ -278,6 +278,19 @@ TEST_F(ExportCTest, InversePrandtlIshlinskiiWithInputLimits) {
   compare(c, CScalar::double_precision, "-O2", 1e-12, {-0.5, 0.6});
 }
 
+TEST_F(ExportCTest, PrandtlIshlinskiiWithCreepAndItsInverse) {
+  check_everything({example_document("pi_creep"), -2.0, 2.0}, kFloatBound);
+  // Input limits (the inverse then resynchronises its plays) and a model without lags.
+  check_everything({example_document("pi_creep"), -2.0, 2.0}, kFloatBound, {-0.8, 0.9});
+  check_everything({model_document("pi_creep", {{"thresholds", {0.0, 0.3}},
+                                                {"weights", {1.0, 0.4}},
+                                                {"time_constants", nlohmann::json::array()},
+                                                {"creep_weights", nlohmann::json::array()},
+                                                {"sample_time", 0.01}}),
+                    -1.0, 1.0},
+                   kFloatBound);
+}
+
 TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiAndItsInverse) {
   check_everything({example_document("modified_pi"), -2.0, 2.0}, kFloatBound);
   // With output limits inside the reached range, so that the clamp acts.
