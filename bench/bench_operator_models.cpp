@@ -9,11 +9,13 @@
 #include <benchmark/benchmark.h>
 
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
 #include "hyst/models/maxwell_slip.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/models/prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/preisach.hpp"
 #include "hyst/models/preisach_relay_grid.hpp"
 #include "hyst/models/rate_dependent_prandtl_ishlinskii.hpp"
@@ -84,6 +86,23 @@ void BM_RateDependentPi(benchmark::State& bench) {
                        0.1, 1.0, 0.5, static_cast<std::size_t>(bench.range(0)) - 1, 0.01, 1e-4)));
 }
 
+// PI with a logarithmic creep law: range(0) plays, 2 lags per decade over 5 decades (11 lags).
+hyst::PrandtlIshlinskiiCreep pi_with_log_creep(std::size_t plays) {
+  const auto thresholds = hyst::uniform_thresholds(plays, 1.0 / static_cast<double>(plays));
+  return hyst::PrandtlIshlinskiiCreep(hyst::pi_logarithmic_creep(
+      {thresholds, std::vector<double>(plays, 1.0 / static_cast<double>(plays))}, 0.02, 0.01, 5, 2,
+      1e-3));
+}
+
+void BM_PiCreep(benchmark::State& bench) {
+  run_steps(bench, pi_with_log_creep(static_cast<std::size_t>(bench.range(0))));
+}
+
+void BM_InversePiCreep(benchmark::State& bench) {
+  run_steps(bench, hyst::InversePrandtlIshlinskiiCreep(
+                       pi_with_log_creep(static_cast<std::size_t>(bench.range(0)))));
+}
+
 // The seed comparison: 8 unweighted backlash elements, 231 unweighted relays.
 void BM_SeedPi8(benchmark::State& bench) {
   run_steps(bench, hyst::PrandtlIshlinskii({.thresholds = hyst::uniform_thresholds(8, 0.125),
@@ -112,6 +131,8 @@ BENCHMARK(BM_MaxwellSlip)->Arg(8)->Arg(32);
 BENCHMARK(BM_ModifiedPi);
 BENCHMARK(BM_InverseModifiedPi);
 BENCHMARK(BM_RateDependentPi)->Arg(8)->Arg(16);
+BENCHMARK(BM_PiCreep)->Arg(8)->Arg(16);
+BENCHMARK(BM_InversePiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_SeedPi8);
 BENCHMARK(BM_SeedPreisach231);
 BENCHMARK(BM_SeedPreisach231RelayByRelay);

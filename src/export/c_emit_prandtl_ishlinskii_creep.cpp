@@ -43,7 +43,8 @@ typedef struct {
 } @_state;
 )";
 
-constexpr std::string_view kCreepModelFunctions = R"(/* One play operator, as the library's play_step(). */
+constexpr std::string_view kCreepModelFunctions =
+    R"(/* One play operator, as the library's play_step(). */
 static @_real @_play(@_real input, @_real threshold, @_real previous) {
   const @_real upper = input + threshold;
   const @_real lower = input - threshold;
@@ -176,7 +177,7 @@ std::string with_lags(std::string_view text, std::string_view key, std::string_v
 }
 
 std::string creep_state_table(const CWriter& writer, std::string_view name, std::string_view size,
-                        const std::vector<double>& values) {
+                              const std::vector<double>& values) {
   return CWriter::fill("static const @_real @_%NAME%[%SIZE%] = %V%;\n",
                        {{"NAME", std::string(name)},
                         {"SIZE", std::string(size)},
@@ -200,22 +201,24 @@ CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCr
   const PrandtlIshlinskii instantaneous({p.thresholds, model.instantaneous_weights(), 0.0});
   code.has_inverse = instantaneous.is_invertible();
   const std::size_t creep_size = std::max<std::size_t>(1, model.size() * model.lags());
-  code.header = CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
-                                                    {"L", std::to_string(model.lags())},
-                                                    {"SIZE", std::to_string(creep_size)},
-                                                    {"TS", fmt::format("{}", p.sample_time)}}) +
-                c_model_declarations("every play and lag at 0",
-                                     "updates the plays and the lags and returns the output.");
+  code.header =
+      CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
+                                               {"L", std::to_string(model.lags())},
+                                               {"SIZE", std::to_string(creep_size)},
+                                               {"TS", fmt::format("{}", p.sample_time)}}) +
+      c_model_declarations("every play and lag at 0",
+                           "updates the plays and the lags and returns the output.");
   std::vector<double> decay = model.decay();
   decay.resize(creep_size, 0.0);
   code.source =
-      CWriter::fill("const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %A%,\n    %C%,\n"
-                    "    %OFF%};\n\n",
-                    {{"R", writer.table(p.thresholds)},
-                     {"P", writer.table(p.weights)},
-                     {"A", writer.table(decay)},
-                     {"C", writer.table(padded_for_c(p.creep_weights))},
-                     {"OFF", writer.number(p.offset)}}) +
+      CWriter::fill(
+          "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %A%,\n    %C%,\n"
+          "    %OFF%};\n\n",
+          {{"R", writer.table(p.thresholds)},
+           {"P", writer.table(p.weights)},
+           {"A", writer.table(decay)},
+           {"C", writer.table(padded_for_c(p.creep_weights))},
+           {"OFF", writer.number(p.offset)}}) +
       "/* The state stored in the model file (INIT) and the default initial state (RESET). */\n" +
       creep_state_table(writer, "PLAY_INIT", "@_OPERATORS", state.play) +
       creep_state_table(writer, "CREEP_INIT", "@_CREEP_SIZE", state.creep) +
