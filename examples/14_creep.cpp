@@ -35,7 +35,8 @@ int main() {
   // 1. A "true" actuator: a PI whose displacement creeps 2 % per decade after a step, from 10 ms
   //    to 1000 s, sampled at 1 ms.
   const hyst::PrandtlIshlinskii::Params pi{{0.0, 0.2, 0.4, 0.6}, {1.0, 0.4, 0.3, 0.2}, 0.0};
-  const hyst::PrandtlIshlinskiiCreep actuator(hyst::pi_logarithmic_creep(pi, 0.02, 0.01, 5, 3, 1e-3));
+  const hyst::PrandtlIshlinskiiCreep actuator(
+      hyst::pi_logarithmic_creep(pi, 0.02, 0.01, 5, 3, 1e-3));
   auto state = actuator.initial_state();
   // The instantaneous response, the PI's: 1 + 0.4 * 0.8 + 0.3 * 0.6 + 0.2 * 0.4.
   const double y0 = 1.58;
@@ -45,7 +46,8 @@ int main() {
     y = actuator.step(state, 1.0);
     if (k == 100 || k == 1000 || k == 10000 || k == 100000) {
       const double t = static_cast<double>(k) * 1e-3;
-      std::printf("              %-7g %.5f  %.5f\n", t, y, y0 * (1.0 + 0.02 * std::log10(t / 0.01)));
+      std::printf("              %-7g %.5f  %.5f\n", t, y,
+                  y0 * (1.0 + 0.02 * std::log10(t / 0.01)));
     }
   }
 
@@ -99,7 +101,8 @@ int main() {
   double drift_without = 0.0;
   for (std::size_t k = 0; k < 60000; ++k) {
     const double desired = 0.8;
-    drift_with = std::abs(actuator.step(actuator_a, inverse.step(inverse_state, desired)) - desired);
+    drift_with =
+        std::abs(actuator.step(actuator_a, inverse.step(inverse_state, desired)) - desired);
     drift_without =
         std::abs(actuator.step(actuator_b, hysteresis_only.step(plain_state, desired)) - desired);
   }

@@ -335,4 +335,21 @@ FieldTable<O> add_multistart_options(FieldTable<O> table) {
   return table;
 }
 
+// The options of the fits whose output is linear in play-operator weights (PI, modified PI,
+// rate-dependent PI, PI with creep), described alike: the play grid, then the NNLS settings that
+// the options struct O has.
+template <class O>
+FieldTable<O> add_play_weight_options(FieldTable<O> table) {
+  table.add("operators", &O::operators, "", "number of plays when thresholds are not given")
+      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)");
+  if constexpr (requires { &O::fit_offset; }) {
+    table.add("fit_offset", &O::fit_offset, "", "fit the output offset");
+  }
+  if constexpr (requires { &O::min_linear_weight; }) {
+    table.add("min_linear_weight", &O::min_linear_weight, "",
+              "lower bound of p_0, keeps p_0 > 0 (the model invertible)");
+  }
+  return table;
+}
+
 }  // namespace hyst::detail

@@ -126,9 +126,7 @@ std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann:
 
 FieldTable<ModifiedPiFitOptions> modified_prandtl_ishlinskii_fit_option_table() {
   using O = ModifiedPiFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+  return add_play_weight_options(FieldTable<O>(Presence::optional))
       .add("dead_zones", &O::dead_zones, "", "dead zones per side of the inverse map")
       .add("dead_zone_thresholds", &O::dead_zone_thresholds, "output units",
            "thresholds of the inverse dead-zone map around the offset, containing 0")

@@ -76,17 +76,13 @@ struct PiCreepCodec : CodecOf<PrandtlIshlinskiiCreep, "pi_creep"> {
 
 FieldTable<PiCreepFitOptions> prandtl_ishlinskii_creep_fit_option_table() {
   using O = PiCreepFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
+  return add_play_weight_options(FieldTable<O>(Presence::optional))
       .add("lags", &O::lags, "", "number of creep lags when time_constants are not given")
       .add("time_constants", &O::time_constants, "s",
            "fixed creep time constants (default: log-spaced from 10 Ts to the record's length)")
       .add("sample_time", &O::sample_time, "s", "Ts of the record")
       .add("initial_state", &O::initial_state, pi_initial_state_from_string,
-           "virgin (plays and lags at 0) or periodic (the record is one period in steady state)")
-      .add("fit_offset", &O::fit_offset, "", "fit the output offset")
-      .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
+           "virgin (plays and lags at 0) or periodic (the record is one period in steady state)");
 }
 
 PiCreepFit fit_one_record(std::span<const double> input, std::span<const double> output,

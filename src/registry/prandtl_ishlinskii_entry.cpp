@@ -77,12 +77,7 @@ using PrandtlIshlinskiiAdapter = ModelAdapter<PrandtlIshlinskiiCodec>;
 
 FieldTable<PiFitOptions> prandtl_ishlinskii_fit_option_table() {
   using O = PiFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-      .add("thresholds", &O::thresholds, "input units", "fixed thresholds (default: uniform)")
-      .add("fit_offset", &O::fit_offset, "", "fit the output offset")
-      .add("min_linear_weight", &O::min_linear_weight, "",
-           "lower bound of p_0, keeps the model invertible")
+  return add_play_weight_options(FieldTable<O>(Presence::optional))
       .add("initial_state", &O::initial_state, pi_initial_state_from_string,
            "virgin (plays at 0) or periodic (one period run first)");
 }

@@ -53,15 +53,10 @@ struct RateDependentPiCodec : CodecOf<RateDependentPrandtlIshlinskii, "rate_depe
 
 FieldTable<RateDependentPiFitOptions> rate_dependent_prandtl_ishlinskii_fit_option_table() {
   using O = RateDependentPiFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("operators", &O::operators, "", "number of plays when thresholds are not given")
-      .add("thresholds", &O::thresholds, "input units",
-           "fixed nominal thresholds (default: uniform)")
+  return add_play_weight_options(FieldTable<O>(Presence::optional))
       .add("rate_gain", &O::rate_gain, "s", "fixed beta >= 0 (0: the classical PI)")
       .add("sample_time", &O::sample_time, "s", "Ts of the record")
-      .add("rate_filter", &O::rate_filter, "s", "rate low-pass time constant")
-      .add("fit_offset", &O::fit_offset, "", "fit the output offset")
-      .add("min_linear_weight", &O::min_linear_weight, "", "lower bound of p_0, keeps p_0 > 0");
+      .add("rate_filter", &O::rate_filter, "s", "rate low-pass time constant");
 }
 
 }  // namespace
