@@ -832,6 +832,38 @@ aixacct_file() {
   fi
 }
 
+# The sample time of a model that has one, from the record's time column: by default the
+# 'Time' column of an aixACCT export (table 1: 401 samples 25 ms apart), or --time COLUMN.
+case_fit_sample_time() {
+  aixacct_file
+  expect_ok "$HYST" fit pi_creep --data "$AIX" --table 1 --input V+ --output P1 \
+    --option initial_state=periodic --option lags=3 --out creep.json
+  python3 -c "
+import json
+m = json.load(open('creep.json'))
+ts = m['info']['data']['sample_time']
+assert ts['column'] == 'Time' and abs(ts['seconds'] - 0.025) < 1e-9, ts
+assert abs(m['params']['sample_time'] - 0.025) < 1e-9, m['params']['sample_time']
+assert len(m['params']['time_constants']) == 3, m['params']['time_constants']
+" || fail "pi_creep sample time from the Time column"
+  # A model without a sample time takes none, and --time says which models have one.
+  expect_ok "$HYST" fit pi --data "$AIX" --table 1 --input V+ --output P1 --out pi.json
+  python3 -c "
+import json
+assert 'sample_time' not in json.load(open('pi.json'))['info']['data']
+" || fail "pi got a sample time"
+  expect_error 1 "--time: model 'pi' has no sample time" "pi_creep" -- \
+    "$HYST" fit pi --data "$AIX" --table 1 --input V+ --output P1 --time Time --out x.json
+  expect_error 1 "both give the sample time" -- \
+    "$HYST" fit pi_creep --data "$AIX" --table 1 --input V+ --output P1 --time Time \
+    --option sample_time=0.1 --out x.json
+  # A CSV time column that jumps is refused where it jumps.
+  awk 'BEGIN { print "t,v,y"; for (k = 0; k < 60; ++k) { t = k < 30 ? k : k + 5; v = sin(k / 5); print t "," v "," 2 * v } }' >jump.csv
+  expect_error 1 "jump.csv: time column 't': the sampling is not uniform: time[30] - time[29] = 6 s" -- \
+    "$HYST" fit pi_creep --data jump.csv --input v --output y --time t --out x.json
+  [ ! -e x.json ] || fail "a refused fit wrote x.json"
+}
+
 case_data_info() {
   aixacct_file
   expect_ok "$HYST" data info "$AIX"

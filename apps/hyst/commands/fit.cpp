@@ -1,11 +1,13 @@
 // hyst fit: identifies a registered model from measured input/output data and saves the model file
 // with the fit report in its "info" object.
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -16,6 +18,7 @@
 #include "fit_forc.hpp"
 #include "fitted_model_output.hpp"
 #include "hyst/data/preprocessing.hpp"
+#include "hyst/data/sample_time.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
 #include "hyst/registry/forc_fit.hpp"
@@ -48,6 +51,7 @@ struct FitOptions {
   std::string forc;  //!< --forc FILE: the FORC route (fit_forc.hpp)
   std::string drift = "none";
   std::size_t hold_out_every = 0;
+  std::string time;  //!< --time COLUMN: the record's sample time from its time column
 };
 
 //! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
@@ -114,6 +118,50 @@ nlohmann::json fit_options(const FitOptions& options) {
     json[key] = value.is_discarded() ? nlohmann::json(text) : value;
   }
   return json;
+}
+
+bool has_fit_option(const ModelEntry& entry, std::string_view name) {
+  return std::any_of(entry.fit_options.begin(), entry.fit_options.end(),
+                     [&](const ParameterInfo& option) { return option.name == name; });
+}
+
+std::string models_with_a_sample_time(const ModelRegistry& registry) {
+  std::string list;
+  for (const auto& entry : registry.entries()) {
+    if (has_fit_option(entry, "sample_time")) list += (list.empty() ? "" : ", ") + entry.name;
+  }
+  return list;
+}
+
+//! The fit option sample_time of a model whose fit has one, read from the record's time column:
+//! --time COLUMN, or else the "Time" column of an aixACCT export when the option is not given.
+//! Its source goes into `data_info`. Throws hyst::Error for a time column that is not uniform,
+//! a model without a sample time, or a sample time given twice.
+void take_sample_time(const FitOptions& options, const ModelEntry& entry, const DataSource& data,
+                      nlohmann::json& fit_json, nlohmann::json& data_info) {
+  const bool given = fit_json.contains("sample_time");
+  if (options.time.empty()) {
+    if (given || !has_fit_option(entry, "sample_time") || data.aixacct() == nullptr ||
+        !data.has_column("Time") || !options.resample.empty()) {
+      return;
+    }
+  } else if (!has_fit_option(entry, "sample_time")) {
+    throw Error(
+        fmt::format("--time: model '{}' has no sample time (its output depends on the "
+                    "order of the samples only); models with one: {}",
+                    entry.name, models_with_a_sample_time(ModelRegistry::builtin())));
+  } else if (given) {
+    throw Error("--time and --option sample_time both give the sample time: give one");
+  } else if (!options.resample.empty()) {
+    throw Error(
+        "--time with --resample: resampling along the input makes the samples "
+        "non-uniform in time, so the record has no sample time");
+  }
+  const std::string column = options.time.empty() ? "Time" : options.time;
+  const double sample_time = data::uniform_sample_time(
+      data.column(column), fmt::format("{}: time column '{}'", options.data, column));
+  fit_json["sample_time"] = sample_time;
+  data_info["sample_time"] = {{"seconds", sample_time}, {"column", column}};
 }
 
 std::string models_that_can_fit(const ModelRegistry& registry) {
@@ -207,6 +255,7 @@ void run(const FitOptions& options) {
     data_info["validation"]["start"] = options.validation_start;
     data_info["validation"]["align"] = options.validation_align;
   }
+  take_sample_time(options, entry, data, fit_json, data_info);
   request.options = fit_json;
   request.preprocessing = prepare;
 
@@ -288,6 +337,10 @@ void add_fit_command(CLI::App& app) {
                       "Also write the full fit report (text; '-': standard output)");
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
+  command->add_option("--time", options->time,
+                      "Time column of --data [s]: its uniform step is the fit option sample_time "
+                      "of a model that has one (an aixACCT export's 'Time' column is used by "
+                      "default)");
   command
       ->add_option("--validation-table", options->validation_table,
                    "Measurement table of an aixACCT --validation-data")
@@ -333,6 +386,8 @@ void add_fit_command(CLI::App& app) {
       --option initial_state=periodic --out pzt.json --report pzt.txt
   hyst fit pi --data RMN_TRAP_SLOW.dat --table 6 --input V+ --output P1 \
       --detrend --resample input-grid:20 --out pzt.json
+  hyst fit pi_creep --data RMN_TRAP_SLOW.dat --table 1 --input V+ --output P1 \
+      --option initial_state=periodic --out creep.json   # sample time from 'Time'
   hyst fit preisach --forc conventional_example.forc --drift multiplicative \
       --hold-out-every 4 --option intervals=32 --out forc.json --report forc.txt
 Preprocessing: --detrend, then --cycles, then --resample on --data. A --validation-data

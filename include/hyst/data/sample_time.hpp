@@ -11,9 +11,9 @@
 namespace hyst::data {
 
 //! The step of `times` [s], checked to be uniform: at least 2 finite, strictly increasing values
-//! whose every step is within 0.1 % of the mean step (plus the rounding of a value printed with 7
-//! significant digits). Throws hyst::Error naming `what` (e.g. "table 2 column 'Time [s]'") and
-//! the first step that breaks the rule.
+//! whose every step is within 0.1 % of the median step (plus the rounding of a value printed with
+//! 7 significant digits); the mean step is returned. Throws hyst::Error naming `what` (e.g. "table
+//! 2 column 'Time [s]'") and the first step that breaks the rule.
 double uniform_sample_time(std::span<const double> times, std::string_view what);
 
 }  // namespace hyst::data
