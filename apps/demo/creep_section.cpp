@@ -64,6 +64,19 @@ struct OutputCase {
   bool zeroed = false;
 };
 
+// The fit on the two faster periods (1 and 0.1 Hz), each at its sample time from its periodic
+// steady state; `lags` = 0: the rate-independent PI.
+hyst::PiCreepFit fit_two_rates(const std::vector<RatePeriod>& periods, std::size_t lags) {
+  const std::vector<hyst::FitRecord> records{{periods[0].voltage, periods[0].output},
+                                             {periods[1].voltage, periods[1].output}};
+  hyst::PiCreepFitOptions options;
+  options.operators = 10;
+  options.lags = lags;
+  options.sample_times = {periods[0].sample_time, periods[1].sample_time};
+  options.initial_state = hyst::PiFitOptions::InitialState::periodic;
+  return hyst::fit_prandtl_ishlinskii_creep(records, options);
+}
+
 // Rows of the comparison table and of the table of lag counts.
 struct CaseRows {
   std::string comparison;
@@ -73,8 +86,6 @@ struct CaseRows {
 CaseRows compare_on(const hyst::io::AixacctFile& file, const OutputCase& output,
                     const fs::path& folder) {
   const auto periods = read_periods(file, output.column);
-  const std::vector<hyst::FitRecord> fit_records{{periods[0].voltage, periods[0].output},
-                                                 {periods[1].voltage, periods[1].output}};
   std::string table;
   hyst::plot::Figure loops{
       fmt::format("{} at 0.01 Hz, predicted from 1 and 0.1 Hz", output.name),
@@ -83,12 +94,7 @@ CaseRows compare_on(const hyst::io::AixacctFile& file, const OutputCase& output,
       {{"measured", periods[2].voltage, periods[2].output, hyst::plot::Series::Style::points}}};
   const std::size_t default_lags = hyst::PiCreepFitOptions{}.lags;
   for (const std::size_t lags : {std::size_t{0}, default_lags}) {
-    hyst::PiCreepFitOptions options;
-    options.operators = 10;
-    options.lags = lags;
-    options.sample_times = {periods[0].sample_time, periods[1].sample_time};
-    options.initial_state = hyst::PiFitOptions::InitialState::periodic;
-    const auto fit = hyst::fit_prandtl_ishlinskii_creep(fit_records, options);
+    const auto fit = fit_two_rates(periods, lags);
     const std::string model =
         lags == 0 ? "PI (rate independent)" : fmt::format("PI + creep, {} lags", lags);
     std::string row = fmt::format("| {} | {} | {} |", output.name, model, fit.report.parameters);
@@ -106,12 +112,7 @@ CaseRows compare_on(const hyst::io::AixacctFile& file, const OutputCase& output,
   // cannot inform).
   std::string sensitivity;
   for (std::size_t lags = 1; lags <= 8; ++lags) {
-    hyst::PiCreepFitOptions options;
-    options.operators = 10;
-    options.lags = lags;
-    options.sample_times = {periods[0].sample_time, periods[1].sample_time};
-    options.initial_state = hyst::PiFitOptions::InitialState::periodic;
-    const auto fit = hyst::fit_prandtl_ishlinskii_creep(fit_records, options);
+    const auto fit = fit_two_rates(periods, lags);
     const auto predicted = predict(fit.model, periods[2], output.zeroed);
     sensitivity +=
         fmt::format(" {:.2f} |", hyst::error_metrics(periods[2].output, predicted).nrmse_percent);

@@ -52,13 +52,13 @@ std::vector<double> sample_times_of(std::span<const FitRecord> records,
 
 // The model's structure with zero weights: thresholds and time constants from the options or
 // their defaults for these records.
+// `inputs`: every record's input, joined.
 PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
+                                    std::span<const double> inputs,
                                     std::span<const double> sample_times,
                                     const PiCreepFitOptions& options) {
-  std::vector<double> inputs;
   double duration = 0.0;
   for (std::size_t r = 0; r < records.size(); ++r) {
-    inputs.insert(inputs.end(), records[r].input.begin(), records[r].input.end());
     duration = std::max(duration, static_cast<double>(records[r].input.size()) * sample_times[r]);
   }
   PrandtlIshlinskiiCreep::Params params;
@@ -93,22 +93,22 @@ struct Solved {
   PrandtlIshlinskiiCreep model;
   detail::OffsetNnls solution;
   std::size_t parameters = 0;
+  std::vector<double> sample_times;  // of each record
 };
 
 // Columns [w_j, z_ij] of every record from rest at its first input; p_0 = eps + q.
 Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& options) {
-  const auto sample_times = sample_times_of(records, options);
-  const PrandtlIshlinskiiCreep probe = structure_of(records, sample_times, options);
-  const std::size_t n = probe.size();
-  const auto columns = static_cast<Eigen::Index>(n + probe.params().creep_weights.size());
-  Eigen::Index rows = 0;
+  auto sample_times = sample_times_of(records, options);
   std::vector<double> inputs;
   std::vector<double> outputs;
   for (const auto& record : records) {
-    rows += static_cast<Eigen::Index>(record.input.size());
     inputs.insert(inputs.end(), record.input.begin(), record.input.end());
     outputs.insert(outputs.end(), record.output.begin(), record.output.end());
   }
+  const PrandtlIshlinskiiCreep probe = structure_of(records, inputs, sample_times, options);
+  const std::size_t n = probe.size();
+  const auto columns = static_cast<Eigen::Index>(n + probe.params().creep_weights.size());
+  const auto rows = static_cast<Eigen::Index>(inputs.size());
   if (rows < columns + 2) {
     throw Error(
         fmt::format("{}: {} samples, fewer than unknowns + 2 = {}", kFit, rows, columns + 2));
@@ -139,7 +139,8 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
   params.creep_weights.assign(solution.x.data() + n, solution.x.data() + columns);
   params.offset = solution.offset;
   const auto parameters = static_cast<std::size_t>(columns) + (options.fit_offset ? 1 : 0);
-  return {PrandtlIshlinskiiCreep(std::move(params)), std::move(solution), parameters};
+  return {PrandtlIshlinskiiCreep(std::move(params)), std::move(solution), parameters,
+          std::move(sample_times)};
 }
 
 }  // namespace
@@ -174,13 +175,12 @@ PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const FitRecord> records,
   for (std::size_t r = 0; r < records.size(); ++r)
     check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
   auto solved = solve(records, options);
-  const auto sample_times = sample_times_of(records, options);
   std::vector<double> measured;
   std::vector<double> predicted;
   for (std::size_t r = 0; r < records.size(); ++r) {
     const auto& record = records[r];
     measured.insert(measured.end(), record.output.begin(), record.output.end());
-    const auto discretised = solved.model.at_sample_time(sample_times[r]);
+    const auto discretised = solved.model.at_sample_time(solved.sample_times[r]);
     auto state = start_state(discretised, record.input, options);
     const auto y = simulate(discretised, state, record.input);
     predicted.insert(predicted.end(), y.begin(), y.end());
