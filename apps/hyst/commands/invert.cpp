@@ -80,11 +80,21 @@ void run(const InvertOptions& options) {
              "wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
              column, options.input_column);
   if (!report.ok()) {
-    const std::string message = fmt::format(
-        "{} of {} samples saturated: out of reach within the input limits [{}, {}] and the "
-        "model's reach (first at sample {}); their inputs are the nearest reachable ones",
-        report.saturated_samples, table.rows(), options.input_min, options.input_max,
-        report.first_saturated);
+    const std::size_t limited = report.saturated_samples - report.not_invertible_samples;
+    std::string message;
+    if (limited > 0) {
+      message = fmt::format(
+          "{} of {} samples saturated: out of reach within the input limits [{}, {}] and the "
+          "model's reach (first at sample {}); their inputs are the nearest reachable ones",
+          limited, table.rows(), options.input_min, options.input_max, report.first_saturated);
+    }
+    if (report.not_invertible_samples > 0) {
+      message += fmt::format(
+          "{}{} of {} samples not invertible: the model is not monotone in the input over "
+          "[{}, {}] there (first at sample {}); the previous input was held",
+          message.empty() ? "" : "; ", report.not_invertible_samples, table.rows(),
+          options.input_min, options.input_max, report.first_not_invertible);
+    }
     if (options.strict) throw Error(message + " (--strict)");
     warn(message);
   }

@@ -15,13 +15,17 @@ enum class InverseStatus : unsigned char {
   ok,           //!< the returned input produces the desired output
   below_range,  //!< the input was raised to its lower limit
   above_range,  //!< the input was lowered to its upper limit
+  //! the output is not monotone in the input over the admissible range from this state (e.g. a
+  //! butterfly loop across its vertex): no unique input exists; the previous input was held
+  not_invertible,
 };
 
-constexpr EnumNames<InverseStatus, 3> enumerator_names(InverseStatus) {
+constexpr EnumNames<InverseStatus, 4> enumerator_names(InverseStatus) {
   return {{
       {InverseStatus::ok, "ok"},
       {InverseStatus::below_range, "below_range"},
       {InverseStatus::above_range, "above_range"},
+      {InverseStatus::not_invertible, "not_invertible"},
   }};
 }
 
@@ -33,8 +37,10 @@ struct InverseSample {
 
 //! Summary of a batch inversion.
 struct InverseReport {
-  std::size_t saturated_samples = 0;  //!< samples whose status was not ok
-  std::size_t first_saturated = 0;    //!< index of the first such sample (if any)
+  std::size_t saturated_samples = 0;       //!< samples whose status was not ok
+  std::size_t first_saturated = 0;         //!< index of the first such sample (if any)
+  std::size_t not_invertible_samples = 0;  //!< of those, samples with status not_invertible
+  std::size_t first_not_invertible = 0;    //!< index of the first such sample (if any)
   bool ok() const { return saturated_samples == 0; }
 };
 

@@ -31,6 +31,9 @@ InverseReport invert(const Inverse& inverse, typename Inverse::State& state,
     if (sample.status != InverseStatus::ok && report.saturated_samples++ == 0) {
       report.first_saturated = k;
     }
+    if (sample.status == InverseStatus::not_invertible && report.not_invertible_samples++ == 0) {
+      report.first_not_invertible = k;
+    }
   }
   return report;
 }
