@@ -13,20 +13,12 @@
 #include "hyst/registry/forc_fit.hpp"
 
 namespace hyst::python {
-namespace {
 
-//! A curve's samples as given from Python, copied.
-struct PythonCurve {
-  std::vector<double> input;
-  std::vector<double> output;
-};
-
-//! (input, output) pairs of arrays as curves.
-std::vector<PythonCurve> curves_from_python(const py::sequence& sequence) {
+std::vector<PythonCurve> curves_from_python(const py::sequence& sequence, std::string_view what) {
   std::vector<PythonCurve> curves;
   for (std::size_t n = 0; n < sequence.size(); ++n) {
     const py::object item = sequence[n];
-    const auto name = fmt::format("curves[{}]", n);
+    const auto name = fmt::format("{}[{}]", what, n);
     py::sequence pair;
     try {
       pair = item.cast<py::sequence>();
@@ -42,8 +34,6 @@ std::vector<PythonCurve> curves_from_python(const py::sequence& sequence) {
   }
   return curves;
 }
-
-}  // namespace
 
 void bind_forc(py::module_& module) {
   module.def(
@@ -77,7 +67,7 @@ void bind_forc(py::module_& module) {
                 "curves must be a hyst.io.MicromagForcFile or a sequence of (input, output) "
                 "pairs");
           }
-          const auto owned = curves_from_python(curves.cast<py::sequence>());
+          const auto owned = curves_from_python(curves.cast<py::sequence>(), "curves");
           const auto reversal = fit_records_of(owned);
           auto fit_options = forc_fit_options_from_json(options_json);
           fit_options.held_out =

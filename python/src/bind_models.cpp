@@ -266,12 +266,16 @@ void bind_inverse(py::module_& m) {
   py::enum_<InverseStatus>(m, "InverseStatus", "Outcome of one inverse sample.")
       .value("ok", InverseStatus::ok)
       .value("below_range", InverseStatus::below_range)
-      .value("above_range", InverseStatus::above_range);
+      .value("above_range", InverseStatus::above_range)
+      .value("not_invertible", InverseStatus::not_invertible);
 
   py::class_<InverseReport>(m, "InverseReport", "Summary of a batch inversion.")
       .def_readonly("saturated_samples", &InverseReport::saturated_samples)
       .def_readonly("first_saturated", &InverseReport::first_saturated,
                     "Index of the first saturated sample (meaningful when saturated_samples > 0).")
+      .def_readonly("not_invertible_samples", &InverseReport::not_invertible_samples,
+                    "Samples with status not_invertible (counted in saturated_samples too).")
+      .def_readonly("first_not_invertible", &InverseReport::first_not_invertible)
       .def_property_readonly("ok", &InverseReport::ok, "True when no sample was saturated.")
       .def("__repr__", [](const InverseReport& r) {
         return r.ok() ? std::string("InverseReport(ok)")

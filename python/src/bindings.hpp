@@ -58,5 +58,14 @@ void bind_data(py::module_& module);
 void bind_compare(py::module_& module);
 void bind_magnetometer_files(py::module_& module);
 void bind_forc(py::module_& module);
+void bind_butterfly(py::module_& module);
+
+//! A record's samples as given from Python, copied.
+struct PythonCurve {
+  std::vector<double> input;
+  std::vector<double> output;
+};
+//! (input, output) pairs of arrays, copied; errors name `what`[n] ("curves[2] must be a pair").
+std::vector<PythonCurve> curves_from_python(const py::sequence& sequence, std::string_view what);
 
 }  // namespace hyst::python

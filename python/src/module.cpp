@@ -219,4 +219,5 @@ PYBIND11_MODULE(hyst, module) {
   hyst::python::bind_compare(module);
   hyst::python::bind_magnetometer_files(module);
   hyst::python::bind_forc(module);
+  hyst::python::bind_butterfly(module);
 }

@@ -20,19 +20,7 @@ namespace {
 
 struct PreisachCodec : PreisachCodecCommon<Preisach, InversePreisach, "preisach"> {
   static FieldTable<P> parameters() {
-    using E = RelayGridEverett::Params;
-    const auto everett =
-        FieldTable<E>()
-            .add("levels", &E::levels, "", "N threshold levels: N(N+1)/2 relays alpha >= beta")
-            .add("lower", &E::lower, "input units",
-                 "lower end of the input range (negative saturation)")
-            .add("upper", &E::upper, "input units",
-                 "upper end of the input range (positive saturation)")
-            .add("weights", &E::weights, "output units",
-                 "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j")
-            .add("layout", &E::layout, preisach_grid_layout_from_string,
-                 "cell_centred or endpoints", Presence::optional);
-    return preisach_parameter_table<P>(everett);
+    return preisach_parameter_table<P>(relay_grid_everett_table());
   }
   static std::size_t parameter_count(const Model& model) {
     return model.params().everett.weights.size() + 1;

@@ -21,6 +21,19 @@
 
 namespace hyst::detail {
 
+// The relay grid's fields: levels, input range, weights, layout.
+inline FieldTable<RelayGridEverett::Params> relay_grid_everett_table() {
+  using E = RelayGridEverett::Params;
+  return FieldTable<E>()
+      .add("levels", &E::levels, "", "N threshold levels: N(N+1)/2 relays alpha >= beta")
+      .add("lower", &E::lower, "input units", "lower end of the input range (negative saturation)")
+      .add("upper", &E::upper, "input units", "upper end of the input range (positive saturation)")
+      .add("weights", &E::weights, "output units",
+           "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j")
+      .add("layout", &E::layout, preisach_grid_layout_from_string, "cell_centred or endpoints",
+           Presence::optional);
+}
+
 template <class Params, class EverettParams>
 FieldTable<Params> preisach_parameter_table(const FieldTable<EverettParams>& everett) {
   return FieldTable<Params>()

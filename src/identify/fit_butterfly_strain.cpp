@@ -1,0 +1,574 @@
+#include "hyst/identify/fit_butterfly_strain.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+#include <Eigen/Core>
+#include <Eigen/QR>
+
+#include "../core/detail/enum_names.hpp"
+#include "detail/convergence.hpp"
+#include "detail/multistart_fit.hpp"
+#include "detail/regressor_matrix.hpp"
+#include "hyst/core/error.hpp"
+#include "hyst/core/simulate.hpp"
+#include "hyst/identify/error_metrics.hpp"
+#include "hyst/models/preisach_relay_grid.hpp"
+#include "weight_fit.hpp"
+
+namespace hyst {
+namespace {
+// Named, so that a unity build can join this file with the other fits.
+namespace butterfly_fit {
+
+using Clock = std::chrono::steady_clock;
+constexpr std::string_view kFit = "butterfly strain fit";
+constexpr std::size_t kRefinedStarts = 3;  // Levenberg-Marquardt runs from the best starts
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+void check_options(const ButterflyFitOptions& options) {
+  if (options.levels < 1 || options.levels > 64) {
+    throw Error(fmt::format("{}: levels = {} must be in [1, 64]", kFit, options.levels), "levels");
+  }
+  if (options.degree < 1 || options.degree > 8) {
+    throw Error(fmt::format("{}: degree = {} must be in [1, 8]", kFit, options.degree), "degree");
+  }
+  if (options.max_iterations < 1) {
+    throw Error(fmt::format("{}: max_iterations must be >= 1", kFit), "max_iterations");
+  }
+  if (options.lower && !std::isfinite(*options.lower)) {
+    throw Error(fmt::format("{}: lower = {} is not finite", kFit, *options.lower), "lower");
+  }
+  if (options.upper && !std::isfinite(*options.upper)) {
+    throw Error(fmt::format("{}: upper = {} is not finite", kFit, *options.upper), "upper");
+  }
+}
+
+// One record as the fit sees it: its whole input (for the periodic start), the compared part of
+// it and the measured output of that part.
+struct RecordView {
+  std::span<const double> whole_input;
+  std::span<const double> input;
+  std::span<const double> output;
+};
+
+// The relay grid with unit weights on the fit's input range.
+Preisach::Params unit_grid(std::span<const RecordView> records,
+                           const ButterflyFitOptions& options) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const auto& record : records) {
+    const auto [min, max] = std::minmax_element(record.input.begin(), record.input.end());
+    lo = std::min(lo, *min);
+    hi = std::max(hi, *max);
+  }
+  Preisach::Params params;
+  params.everett.levels = options.levels;
+  params.everett.lower = options.lower.value_or(lo);
+  params.everett.upper = options.upper.value_or(hi);
+  if (!(params.everett.lower < params.everett.upper)) {
+    throw Error(fmt::format("{}: the input range [{}, {}] is empty (lower must be < upper; a "
+                            "constant input cannot switch a polarisation)",
+                            kFit, params.everett.lower, params.everett.upper),
+                "upper");
+  }
+  params.everett.weights = uniform_relay_weights(options.levels, 1.0);
+  return params;
+}
+
+PreisachInitialState preisach_start(ButterflyFitStart start) {
+  switch (start) {
+    case ButterflyFitStart::positive_saturation:
+      return PreisachInitialState::positive_saturation;
+    case ButterflyFitStart::demagnetised:
+      return PreisachInitialState::demagnetised;
+    case ButterflyFitStart::periodic:
+    case ButterflyFitStart::negative_saturation:
+      break;
+  }
+  return PreisachInitialState::negative_saturation;
+}
+
+// The state a record starts from, for any Preisach-based model with periodic_state-like replay.
+template <class Model>
+typename Model::State start_state(const Model& model, std::span<const double> whole_input,
+                                  ButterflyFitStart start) {
+  auto state = model.make_state(preisach_start(start));
+  if (start == ButterflyFitStart::periodic) {
+    for (double v : whole_input)
+      model.step(state, v);
+  }
+  return state;
+}
+ButterflyStrain::State start_state(const ButterflyStrain& model,
+                                   std::span<const double> whole_input, ButterflyFitStart start) {
+  return start_state(model.polarisation_model(), whole_input, start);
+}
+
+// Every record's relay states s_r[k] = +-1, stacked, with the inputs and outputs.
+struct Design {
+  Eigen::MatrixXd relays;
+  Eigen::VectorXd input;
+  Eigen::VectorXd output;
+};
+
+Design design_of(std::span<const RecordView> records, const Preisach::Params& grid,
+                 ButterflyFitStart start) {
+  auto params = grid;
+  params.initial_state = preisach_start(start);
+  const PreisachRelayGrid relays(params);
+  Eigen::Index rows = 0;
+  for (const auto& record : records)
+    rows += static_cast<Eigen::Index>(record.input.size());
+  const auto columns = static_cast<Eigen::Index>(relays.relay_count());
+  Design design{detail::regressor_matrix(rows, columns, kFit), Eigen::VectorXd(rows),
+                Eigen::VectorXd(rows)};
+  Eigen::Index row = 0;
+  for (const auto& record : records) {
+    auto state = relays.initial_state();
+    if (start == ButterflyFitStart::periodic) {
+      for (double v : record.whole_input)
+        relays.step(state, v);
+    }
+    for (std::size_t k = 0; k < record.input.size(); ++k, ++row) {
+      relays.step(state, record.input[k]);
+      for (Eigen::Index r = 0; r < columns; ++r)
+        design.relays(row, r) = state.relays[static_cast<std::size_t>(r)];
+      design.input[row] = record.input[k];
+      design.output[row] = record.output[k];
+    }
+  }
+  return design;
+}
+
+// Columns [1, v, P, P^2, ..., P^N] of the map (v only with the field term).
+Eigen::MatrixXd map_columns(const Eigen::VectorXd& input, const Eigen::VectorXd& polarisation,
+                            std::size_t degree, bool field_term) {
+  const auto first = field_term ? 2 : 1;
+  Eigen::MatrixXd X(input.size(), first + static_cast<Eigen::Index>(degree));
+  X.col(0).setOnes();
+  if (field_term) X.col(1) = input;
+  Eigen::VectorXd power = Eigen::VectorXd::Ones(input.size());
+  for (std::size_t n = 0; n < degree; ++n) {
+    power.array() *= polarisation.array();
+    X.col(first + static_cast<Eigen::Index>(n)) = power;
+  }
+  return X;
+}
+
+// The map's coefficients [y_off, d, q_1 .. q_N] by linear least squares (d = 0 without the field
+// term), and the residual norm.
+struct MapFit {
+  Eigen::VectorXd coefficients;
+  double residual = 0.0;
+};
+MapFit fit_map(const Eigen::VectorXd& input, const Eigen::VectorXd& polarisation,
+               const Eigen::VectorXd& output, std::size_t degree, bool field_term) {
+  const Eigen::MatrixXd X = map_columns(input, polarisation, degree, field_term);
+  const Eigen::VectorXd solved = X.colPivHouseholderQr().solve(output);
+  MapFit fit{Eigen::VectorXd::Zero(2 + static_cast<Eigen::Index>(degree)),
+             (X * solved - output).norm()};
+  fit.coefficients[0] = solved[0];
+  if (field_term) fit.coefficients[1] = solved[1];
+  fit.coefficients.tail(static_cast<Eigen::Index>(degree)) =
+      solved.tail(static_cast<Eigen::Index>(degree));
+  return fit;
+}
+
+// Residuals y_model[k] - y[k] of the direct form and the scale term (F0 - 1) sigma sqrt(K), with
+// the analytic Jacobian. Blocks: relay weights mu (m), map [y_off, d, q_1 .. q_N].
+class LatentStrainCost final : public ceres::CostFunction {
+ public:
+  LatentStrainCost(const Design& design, std::size_t degree, double gauge)
+      : design_(design), degree_(static_cast<Eigen::Index>(degree)), gauge_(gauge) {
+    set_num_residuals(static_cast<int>(design.output.size() + 1));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(design.relays.cols()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(2 + degree));
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Index rows = design_.relays.rows();
+    const Eigen::Index m = design_.relays.cols();
+    const Eigen::Map<const Eigen::VectorXd> mu(parameters[0], m);
+    const double* map = parameters[1];
+    const Eigen::VectorXd P = design_.relays * mu;
+    Eigen::Map<Eigen::VectorXd> e(residuals, rows + 1);
+    Eigen::VectorXd slope(rows);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      double value = 0.0;
+      double derivative = 0.0;
+      for (Eigen::Index n = degree_; n-- > 0;) {
+        value = (value + map[2 + n]) * P[k];
+        derivative = derivative * P[k] + static_cast<double>(n + 1) * map[2 + n];
+      }
+      e[k] = map[0] + map[1] * design_.input[k] + value - design_.output[k];
+      slope[k] = derivative;
+    }
+    e[rows] = gauge_ * (mu.sum() - 1.0);
+    if (!jacobians) return true;
+    if (jacobians[0]) {
+      Eigen::Map<RowMajor> J(jacobians[0], rows + 1, m);
+      J.topRows(rows) = slope.asDiagonal() * design_.relays;
+      J.row(rows).setConstant(gauge_);
+    }
+    if (jacobians[1]) {
+      Eigen::Map<RowMajor> J(jacobians[1], rows + 1, 2 + degree_);
+      J.col(0).head(rows).setOnes();
+      J.col(1).head(rows) = design_.input;
+      Eigen::VectorXd power = Eigen::VectorXd::Ones(rows);
+      for (Eigen::Index n = 0; n < degree_; ++n) {
+        power.array() *= P.array();
+        J.col(2 + n).head(rows) = power;
+      }
+      J.row(rows).setZero();
+    }
+    return true;
+  }
+
+ private:
+  const Design& design_;
+  Eigen::Index degree_;
+  double gauge_;
+};
+
+// A Gaussian density around the coercive voltage v_c (alpha = c + v_c, beta = c - v_c), unit
+// total weight.
+Eigen::VectorXd coercive_density(const Preisach::Params& grid, double coercive, double width) {
+  const auto thresholds = preisach_thresholds(grid.everett.levels, grid.everett.lower,
+                                              grid.everett.upper, grid.everett.layout);
+  const double centre = 0.5 * (grid.everett.lower + grid.everett.upper);
+  Eigen::VectorXd mu(static_cast<Eigen::Index>(grid.everett.weights.size()));
+  for (std::size_t i = 0; i < thresholds.size(); ++i) {
+    for (std::size_t j = 0; j <= i; ++j) {
+      const double half_width = 0.5 * (thresholds[i] - thresholds[j]) - coercive;
+      const double bias = 0.5 * (thresholds[i] + thresholds[j]) - centre;
+      mu[static_cast<Eigen::Index>(preisach_relay_index(i, j))] =
+          std::exp(-0.5 * (half_width * half_width + bias * bias) / (width * width));
+    }
+  }
+  return mu / mu.sum();
+}
+
+struct Start {
+  Eigen::VectorXd mu;
+  Eigen::VectorXd map;
+  double residual = 0.0;
+};
+
+// The coercive-density starts (file comment of the header), best first.
+std::vector<Start> initial_guesses(const Design& design, const Preisach::Params& grid,
+                                   const ButterflyFitOptions& options) {
+  const double half = 0.5 * (grid.everett.upper - grid.everett.lower);
+  std::vector<Start> starts;
+  for (int tenth = 1; tenth <= 9; ++tenth) {
+    Eigen::VectorXd mu = coercive_density(grid, 0.1 * tenth * half, 0.15 * half);
+    const Eigen::VectorXd P = design.relays * mu;
+    MapFit map = fit_map(design.input, P, design.output, options.degree, options.fit_field_term);
+    starts.push_back({std::move(mu), std::move(map.coefficients), map.residual});
+  }
+  std::sort(starts.begin(), starts.end(),
+            [](const Start& a, const Start& b) { return a.residual < b.residual; });
+  return starts;
+}
+
+// One Levenberg-Marquardt run from `start` (updated in place).
+struct Run {
+  ceres::Solver::Summary summary;
+  bool stagnated = false;
+  std::string stagnation_message;
+};
+Run refine(Start& start, const Design& design, const ButterflyFitOptions& options, double gauge) {
+  ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  problem.AddResidualBlock(new LatentStrainCost(design, options.degree, gauge), nullptr,
+                           start.mu.data(), start.map.data());
+  for (Eigen::Index r = 0; r < start.mu.size(); ++r)
+    problem.SetParameterLowerBound(start.mu.data(), static_cast<int>(r), 0.0);
+  if (!options.fit_field_term) {
+    problem.SetManifold(start.map.data(),
+                        new ceres::SubsetManifold(static_cast<int>(start.map.size()), {1}));
+  }
+  auto solver =
+      detail::levenberg_marquardt_options(options.max_iterations, detail::kFunctionTolerance);
+  detail::StagnationStop stagnation;
+  solver.callbacks.push_back(&stagnation);
+  Run run;
+  ceres::Solve(solver, &problem, &run.summary);
+  run.stagnated = stagnation.stopped();
+  if (run.stagnated) run.stagnation_message = stagnation.message();
+  return run;
+}
+
+ButterflyStrain model_of(const Preisach::Params& grid, const Eigen::VectorXd& mu,
+                         const Eigen::VectorXd& map, ButterflyFitStart start) {
+  ButterflyStrain::Params params;
+  params.polarisation = grid;
+  params.polarisation.initial_state = preisach_start(start);
+  params.polarisation.everett.weights.assign(mu.data(), mu.data() + mu.size());
+  params.offset = map[0];
+  params.field_coefficient = map[1];
+  params.polarisation_coefficients.assign(map.data() + 2, map.data() + map.size());
+  return ButterflyStrain(std::move(params));
+}
+
+double half_sum_of_squares(std::span<const double> measured, std::span<const double> predicted) {
+  double cost = 0.0;
+  for (std::size_t k = 0; k < measured.size(); ++k)
+    cost += 0.5 * (measured[k] - predicted[k]) * (measured[k] - predicted[k]);
+  return cost;
+}
+
+double best_constant_cost(std::span<const double> measured) {
+  double mean = 0.0;
+  for (double y : measured)
+    mean += y;
+  mean /= static_cast<double>(measured.size());
+  double cost = 0.0;
+  for (double y : measured)
+    cost += 0.5 * (y - mean) * (y - mean);
+  return cost;
+}
+
+// Simulates every record from its start and fills the report's costs and fit metrics.
+void score(FitReport& report, const ButterflyStrain& model, std::span<const RecordView> records,
+           ButterflyFitStart start) {
+  std::vector<double> measured;
+  std::vector<double> predicted;
+  for (const auto& record : records) {
+    auto state = start_state(model, record.whole_input, start);
+    const auto y = simulate(model, state, record.input);
+    measured.insert(measured.end(), record.output.begin(), record.output.end());
+    predicted.insert(predicted.end(), y.begin(), y.end());
+  }
+  report.initial_cost = best_constant_cost(measured);
+  report.final_cost = half_sum_of_squares(measured, predicted);
+  report.fit = error_metrics(measured, predicted);
+}
+
+ButterflyStrain solve_direct(std::span<const RecordView> records,
+                             const ButterflyFitOptions& options, FitReport& report) {
+  const Preisach::Params grid = unit_grid(records, options);
+  const Design design = design_of(records, grid, options.start);
+  const auto m = design.relays.cols();
+  const auto unknowns = static_cast<std::size_t>(m) + options.degree + 2;
+  if (static_cast<std::size_t>(design.output.size()) < unknowns + 2) {
+    throw Error(fmt::format("{}: {} samples, fewer than unknowns + 2 = {} (use fewer levels)", kFit,
+                            design.output.size(), unknowns + 2),
+                "levels");
+  }
+  const double mean = design.output.mean();
+  const double sigma = std::sqrt((design.output.array() - mean).square().mean());
+  const double gauge = sigma * std::sqrt(static_cast<double>(design.output.size()));
+  // The cost is not convex: Levenberg-Marquardt from the best few starts, the lowest cost kept.
+  auto starts = initial_guesses(design, grid, options);
+  starts.resize(std::min<std::size_t>(starts.size(), kRefinedStarts));
+  std::size_t best = 0;
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    runs.push_back(refine(starts[i], design, options, gauge));
+    if (runs[i].summary.final_cost < runs[best].summary.final_cost) best = i;
+  }
+  Start& start = starts[best];
+  const auto& summary = runs[best].summary;
+  std::size_t iterations = 0;
+  for (const auto& run : runs)
+    iterations += run.summary.iterations.size();
+
+  // F0 = 1 exactly: P -> P / F0, q_n -> q_n F0^n.
+  const double total = start.mu.sum();
+  if (!(total > 0.0) || !start.map.allFinite()) {
+    throw Error(fmt::format("{}: the optimisation failed ({})", kFit, summary.message));
+  }
+  start.mu /= total;
+  double power = 1.0;
+  for (Eigen::Index n = 2; n < start.map.size(); ++n) {
+    power *= total;
+    start.map[n] *= power;
+  }
+  report.model = "butterfly_strain";
+  report.method =
+      "levenberg-marquardt (ceres) on relay weights and strain map, latent polarisation";
+  report.termination =
+      runs[best].stagnated ? Termination::converged : detail::termination_of_ceres(summary);
+  report.message =
+      fmt::format("best of {} starts: {}", runs.size(),
+                  runs[best].stagnated ? runs[best].stagnation_message : summary.message);
+  report.iterations = iterations;
+  report.parameters =
+      static_cast<std::size_t>(m) - 1 + options.degree + 1 + (options.fit_field_term ? 1 : 0);
+  return model_of(grid, start.mu, start.map, options.start);
+}
+
+std::vector<RecordView> views_of(std::span<const FitRecord> records) {
+  if (records.empty()) throw Error(fmt::format("{}: no records", kFit), "records");
+  std::vector<RecordView> views;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
+    views.push_back({records[r].input, records[r].input, records[r].output});
+  }
+  return views;
+}
+
+ButterflyFit fit_one(std::span<const double> input, std::span<const double> output,
+                     const ButterflyFitOptions& options) {
+  const auto begin = Clock::now();
+  check_options(options);
+  const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
+  const RecordView record{input, parts.fit_input, parts.fit_output};
+  FitReport report;
+  auto model = solve_direct(std::span(&record, 1), options, report);
+  score(report, model, std::span(&record, 1), options.start);
+  auto initial_state = start_state(model, input, options.start);
+  if (!parts.validation_input.empty()) {
+    auto state = initial_state;
+    simulate(model, state, parts.fit_input);
+    report.validation =
+        error_metrics(parts.validation_output, simulate(model, state, parts.validation_input));
+  }
+  report.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+  return {std::move(model), std::move(initial_state), std::move(report)};
+}
+
+ButterflyFit fit_many(std::span<const FitRecord> records, const ButterflyFitOptions& options) {
+  const auto begin = Clock::now();
+  check_options(options);
+  if (options.validate_fraction != 0.0) {
+    throw Error(fmt::format("{} of several records: validate_fraction = {} must be 0 (hold out a "
+                            "record instead)",
+                            kFit, options.validate_fraction),
+                "validate_fraction");
+  }
+  const auto views = views_of(records);
+  FitReport report;
+  auto model = solve_direct(views, options, report);
+  score(report, model, views, options.start);
+  auto initial_state = start_state(model, views.front().whole_input, options.start);
+  report.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+  return {std::move(model), std::move(initial_state), std::move(report)};
+}
+
+ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
+                                    std::span<const double> polarisation,
+                                    std::span<const double> output,
+                                    const ButterflyFitOptions& options) {
+  const auto begin = Clock::now();
+  check_options(options);
+  if (polarisation.size() != input.size()) {
+    throw Error(fmt::format("{}: {} polarisation samples for {} input samples", kFit,
+                            polarisation.size(), input.size()),
+                "polarisation");
+  }
+  const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
+  const auto p_parts = detail::split_record(input, polarisation, options.validate_fraction,
+                                            "butterfly strain fit (polarisation)", 2);
+  const RecordView p_record{input, parts.fit_input, p_parts.fit_output};
+  const RecordView record{input, parts.fit_input, parts.fit_output};
+  const Preisach::Params grid = unit_grid(std::span(&p_record, 1), options);
+  const Design design = design_of(std::span(&p_record, 1), grid, options.start);
+
+  // Stage 1: P(v) by NNLS with a free P offset.
+  auto stage1 = detail::nnls_with_offset(design.relays, design.output, true);
+  ButterflyStrain::Params params;
+  params.polarisation = grid;
+  params.polarisation.initial_state = preisach_start(options.start);
+  params.polarisation.everett.weights.assign(stage1.x.data(), stage1.x.data() + stage1.x.size());
+  params.polarisation.offset = stage1.offset;
+  const Preisach polarisation_model(params.polarisation);
+  auto p_state = start_state(polarisation_model, input, options.start);
+  const auto initial_state = p_state;
+  const auto p_fit = simulate(polarisation_model, p_state, parts.fit_input);
+  FitReport polarisation_report = detail::weight_fit_report(
+      "preisach", "nnls (Lawson-Hanson) on relay weights", stage1,
+      static_cast<std::size_t>(stage1.x.size()) + 1, p_parts.fit_output, p_fit);
+  if (!p_parts.validation_input.empty()) {
+    polarisation_report.validation = error_metrics(
+        p_parts.validation_output, simulate(polarisation_model, p_state, p_parts.validation_input));
+  }
+
+  // Stage 2: the map on the model's polarisation (the fitted chain) ...
+  const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(
+      parts.fit_input.data(), static_cast<Eigen::Index>(parts.fit_input.size()));
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(
+      parts.fit_output.data(), static_cast<Eigen::Index>(parts.fit_output.size()));
+  const Eigen::VectorXd P_model =
+      Eigen::Map<const Eigen::VectorXd>(p_fit.data(), static_cast<Eigen::Index>(p_fit.size()));
+  const MapFit chain = fit_map(v, P_model, y, options.degree, options.fit_field_term);
+  params.offset = chain.coefficients[0];
+  params.field_coefficient = chain.coefficients[1];
+  params.polarisation_coefficients.assign(chain.coefficients.data() + 2,
+                                          chain.coefficients.data() + chain.coefficients.size());
+  ButterflyStrain model(std::move(params));
+  FitReport report;
+  report.model = "butterfly_strain";
+  report.method = "two stages: nnls (Lawson-Hanson) on P(v), linear least squares on y(v, P)";
+  report.termination = stage1.nnls.termination;
+  report.message = stage1.nnls.message;
+  report.iterations = stage1.nnls.iterations;
+  report.parameters = static_cast<std::size_t>(stage1.x.size()) + 1 + options.degree + 1 +
+                      (options.fit_field_term ? 1 : 0);
+  score(report, model, std::span(&record, 1), options.start);
+  if (!parts.validation_input.empty()) {
+    auto state = initial_state;
+    simulate(model, state, parts.fit_input);
+    report.validation =
+        error_metrics(parts.validation_output, simulate(model, state, parts.validation_input));
+  }
+
+  // ... and on the measured polarisation, scored on its own.
+  const MapFit direct = fit_map(v, design.output, y, options.degree, options.fit_field_term);
+  const Eigen::VectorXd mapped =
+      map_columns(v, design.output, options.degree, true) * direct.coefficients;
+  const std::vector<double> mapped_samples(mapped.data(), mapped.data() + mapped.size());
+  FitReport map_report;
+  map_report.model = "butterfly_strain_map";
+  map_report.method = "linear least squares on y(v, P) with measured P";
+  map_report.termination = Termination::converged;
+  map_report.message = "closed-form least-squares solution (column-pivoting QR)";
+  map_report.parameters = options.degree + 1 + (options.fit_field_term ? 1 : 0);
+  map_report.initial_cost = best_constant_cost(parts.fit_output);
+  map_report.final_cost = half_sum_of_squares(parts.fit_output, mapped_samples);
+  map_report.fit = error_metrics(parts.fit_output, mapped_samples);
+
+  const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+  report.seconds = seconds;
+  polarisation_report.seconds = seconds;
+  map_report.seconds = seconds;
+  return {{std::move(model), initial_state, std::move(report)},
+          std::move(polarisation_report),
+          std::move(map_report)};
+}
+
+}  // namespace butterfly_fit
+}  // namespace
+
+ButterflyFitStart butterfly_fit_start_from_string(std::string_view text) {
+  return detail::value_named(text, enum_names<ButterflyFitStart>, "butterfly fit start",
+                             "initial_state");
+}
+
+ButterflyFit fit_butterfly_strain(std::span<const double> input, std::span<const double> output,
+                                  const ButterflyFitOptions& options) {
+  return butterfly_fit::fit_one(input, output, options);
+}
+
+ButterflyFit fit_butterfly_strain(std::span<const FitRecord> records,
+                                  const ButterflyFitOptions& options) {
+  return butterfly_fit::fit_many(records, options);
+}
+
+ButterflyTwoStageFit fit_butterfly_strain_with_polarisation(std::span<const double> input,
+                                                            std::span<const double> polarisation,
+                                                            std::span<const double> output,
+                                                            const ButterflyFitOptions& options) {
+  return butterfly_fit::fit_two_stages(input, polarisation, output, options);
+}
+
+}  // namespace hyst
