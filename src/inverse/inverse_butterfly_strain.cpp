@@ -3,47 +3,43 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Core>
-#include <unsupported/Eigen/Polynomials>
-
 namespace hyst {
-namespace {
-
-// The real roots of q'(P) = sum_n n q_n P^(n-1), increasing.
-std::vector<double> slope_roots(const std::vector<double>& q) {
-  Eigen::VectorXd slope(static_cast<Eigen::Index>(q.size()));
-  for (std::size_t n = 0; n < q.size(); ++n)
-    slope[static_cast<Eigen::Index>(n)] = static_cast<double>(n + 1) * q[n];
-  Eigen::Index degree = slope.size() - 1;
-  while (degree > 0 && slope[degree] == 0.0)
-    --degree;
-  std::vector<double> roots;
-  if (degree == 0) return roots;
-  Eigen::PolynomialSolver<double, Eigen::Dynamic> solver(slope.head(degree + 1));
-  solver.realRoots(roots);
-  std::sort(roots.begin(), roots.end());
-  return roots;
-}
-
-}  // namespace
 
 InverseButterflyStrain::InverseButterflyStrain(ButterflyStrain model,
                                                const NumericalInverseOptions& options)
     : search_(std::move(model), options),
-      critical_(slope_roots(search_.forward().params().polarisation_coefficients)),
+      thresholds_([this] {
+        const auto& grid = search_.forward().params().polarisation.everett;
+        return preisach_thresholds(grid.levels, grid.lower, grid.upper, grid.layout);
+      }()),
       hold_default_(std::clamp(0.0, search_.input_min(), search_.input_max())) {}
 
 bool InverseButterflyStrain::invertible_from(const State& state) const noexcept {
-  const Preisach& polarisation = model().polarisation_model();
-  const double p_lo = polarisation.preview(state, input_min());
-  const double p_hi = polarisation.preview(state, input_max());
-  for (double critical : critical_) {
-    if (critical > p_lo && critical < p_hi) return false;
+  const double lo = input_min();
+  const double hi = input_max();
+  double previous = model().preview(state, lo);
+  double previous_input = lo;
+  int direction = 0;  // +1 rising, -1 falling, 0 flat so far
+  const auto consistent = [&](double input) {
+    const double y = model().preview(state, input);
+    const double change = y - previous;
+    const double noise = 1e-12 * (std::abs(y) + std::abs(previous));
+    const int sign = change > noise ? 1 : (change < -noise ? -1 : 0);
+    if (sign != 0 && direction != 0 && sign != direction) return false;
+    if (sign != 0) direction = sign;
+    previous = y;
+    previous_input = input;
+    return true;
+  };
+  for (double c : thresholds_) {
+    if (c <= lo) continue;
+    if (c >= hi) break;
+    if (!consistent(0.5 * (previous_input + c)) || !consistent(c)) return false;
   }
-  // No vertex inside: q' has one sign on [p_lo, p_hi]; the field term must not oppose it.
+  if (!consistent(0.5 * (previous_input + hi)) || !consistent(hi)) return false;
+  // Between the sampled points y moves with d u: d must go the same way.
   const double d = model().params().field_coefficient;
-  const double slope = model().strain_slope(0.5 * (p_lo + p_hi));
-  return d * slope >= 0.0;
+  return !(d > 0.0 && direction < 0) && !(d < 0.0 && direction > 0);
 }
 
 }  // namespace hyst

@@ -1,7 +1,9 @@
 // Inverse of the butterfly strain model: exact on a unipolar drive below the coercive voltage,
-// not_invertible (never a wrong input) across the vertex, and the critical polarisations.
+// not_invertible (never a wrong input) across the vertex, and the exact branch test against a
+// dense sweep.
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -33,12 +35,6 @@ ButterflyStrain coercive_butterfly() {
   p.field_coefficient = 0.2;
   p.polarisation_coefficients = {0.3, 1.0};
   return ButterflyStrain(p);
-}
-
-TEST(InverseButterflyStrain, CriticalPolarisationIsTheVertex) {
-  const InverseButterflyStrain inverse(coercive_butterfly(), {.input_min = 0.0, .input_max = 0.4});
-  ASSERT_EQ(inverse.critical_polarisations().size(), 1U);
-  EXPECT_NEAR(inverse.critical_polarisations()[0], -0.15, 1e-14);
 }
 
 TEST(InverseButterflyStrain, InvertsAUnipolarDriveBelowTheCoerciveVoltage) {
@@ -81,6 +77,48 @@ TEST(InverseButterflyStrain, SaysNotInvertibleAcrossTheVertex) {
   const auto report = invert(inverse, state, targets, inputs);
   EXPECT_EQ(report.not_invertible_samples, 5U);
   EXPECT_EQ(report.first_not_invertible, 0U);
+}
+
+// A second algorithm for the branch test: y(u) previewed on a dense grid of [lo, hi] must not
+// change direction, and d must not oppose it.
+bool monotone_by_sweep(const ButterflyStrain& model, const ButterflyStrain::State& state, double lo,
+                       double hi) {
+  int direction = 0;
+  double previous = model.preview(state, lo);
+  for (int k = 1; k <= 20000; ++k) {
+    const double y = model.preview(state, lo + (hi - lo) * k / 20000.0);
+    const int sign = y > previous + 1e-12 ? 1 : (y < previous - 1e-12 ? -1 : 0);
+    if (sign != 0 && direction != 0 && sign != direction) return false;
+    if (sign != 0) direction = sign;
+    previous = y;
+  }
+  const double d = model.params().field_coefficient;
+  return !(d > 0.0 && direction < 0) && !(d < 0.0 && direction > 0);
+}
+
+TEST(InverseButterflyStrain, BranchTestAgreesWithADenseSweep) {
+  const ButterflyStrain model = coercive_butterfly();
+  int invertible = 0;
+  int not_invertible = 0;
+  for (double poling : {-1.0, 1.0}) {
+    for (double rest : {-0.4, 0.0, 0.5}) {
+      auto state = model.initial_state();
+      model.step(state, poling);
+      model.step(state, rest);
+      for (const auto& [lo, hi] :
+           {std::pair{0.0, 0.4}, std::pair{-0.4, 0.0}, std::pair{-0.3, 0.3}, std::pair{-1.0, 1.0},
+            std::pair{0.2, 0.9}, std::pair{-0.9, -0.2}}) {
+        const InverseButterflyStrain inverse(model, {.input_min = lo, .input_max = hi});
+        const bool expected = monotone_by_sweep(model, state, lo, hi);
+        EXPECT_EQ(inverse.invertible_from(state), expected)
+            << "poled " << poling << ", at " << rest << ", limits [" << lo << ", " << hi << "]";
+        (expected ? invertible : not_invertible) += 1;
+      }
+    }
+  }
+  // Both answers occur, so the agreement means something.
+  EXPECT_GT(invertible, 3);
+  EXPECT_GT(not_invertible, 3);
 }
 
 TEST(InverseButterflyStrain, RejectsInvalidLimits) {

@@ -2,20 +2,20 @@
 //! \file
 //! Inverse of the butterfly strain model where it exists.
 //!
-//! From a given state the polarisation P(u) of the next input u never decreases with u (the
-//! Preisach weights are >= 0), and the strain y = y_off + d u + q(P(u)) increases with u wherever
-//! q'(P) and d do not have opposite signs. A butterfly has a vertex: at the critical
-//! polarisations P*, the real roots of q'(P) = sum n q_n P^(n-1) (computed once, at
-//! construction), the strain turns back. So each sample first checks the branch: with
-//! P_lo = P(u_min) and P_hi = P(u_max) from the current state, the map u -> y is monotone over
-//! [u_min, u_max] if no critical polarisation lies strictly inside (P_lo, P_hi) and the field term
-//! does not oppose q' there (d q'(P) >= 0). Then the bracketed search of the numerical inverse
-//! (numerical_inverse.hpp) solves it (status ok, below_range or above_range); otherwise no input
-//! is unique: the previous input is held (applied again) and the status is not_invertible.
+//! From a given state the polarisation P(u) of the next input u is piecewise constant: it changes
+//! only at the relay grid's thresholds c_k, and between two thresholds the strain
+//! y(u) = y_off + d u + q(P) moves with d u alone. So whether u -> y is monotone over
+//! [u_min, u_max] is decided exactly by y at u_min, at u_max, at every threshold inside and at the
+//! midpoints between them (at most 2 N + 2 previews, no allocation): the sampled values must not
+//! change direction, and d must not oppose them. A butterfly turns back where P crosses a vertex
+//! of q (a root of q'(P)); its branches on either side are monotone. On a monotone range the
+//! bracketed search of the numerical inverse (numerical_inverse.hpp) solves it (status ok,
+//! below_range or above_range); otherwise no input is unique: the previous input is held (applied
+//! again) and the status is not_invertible.
 //!
-//! In practice: a unipolar drive below the coercive voltage stays on one side of the vertex and
-//! is inverted exactly; limits that reach the coercive voltage give not_invertible on the samples
-//! where switching would be possible, never a wrong input.
+//! In practice: a unipolar drive below the coercive voltage stays on one branch and is inverted
+//! exactly; limits that reach the coercive voltage give not_invertible on the samples where
+//! switching would be possible, never a wrong input.
 
 #include <cmath>
 #include <utility>
@@ -40,9 +40,6 @@ class InverseButterflyStrain {
   double input_max() const { return search_.input_max(); }
   //! The forward model's initial state.
   State initial_state() const { return model().initial_state(); }
-  //! The real roots of dy/dP, increasing [P units].
-  const std::vector<double>& critical_polarisations() const { return critical_; }
-
   //! True if u -> y is monotone over the input limits from `state` (file comment).
   bool invertible_from(const State& state) const noexcept;
 
@@ -58,8 +55,8 @@ class InverseButterflyStrain {
 
  private:
   NumericalInverse<ButterflyStrain> search_;
-  std::vector<double> critical_;
-  double hold_default_;  // held before any input: the limit nearest zero
+  std::vector<double> thresholds_;  // of the polarisation's relay grid, increasing
+  double hold_default_;             // held before any input: the limit nearest zero
 };
 
 }  // namespace hyst
