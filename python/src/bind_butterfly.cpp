@@ -43,13 +43,16 @@ void bind_butterfly(py::module_& module) {
           fit.emplace(fit_butterfly_strain_model_with_polarisation(v, p, y, options_json));
         }
         return py::make_tuple(std::move(fit->model), std::move(fit->report),
-                              std::move(fit->polarisation_report), std::move(fit->map_report));
+                              std::move(fit->polarisation_report), std::move(fit->map_report),
+                              fit->leakage_conductance);
       },
       "input"_a, "polarisation"_a, "output"_a,
       "The two-stage butterfly strain fit with measured polarisation: P(v) by NNLS on a Preisach "
       "relay grid, then y = y_off + d v + sum q_n P^n on the model's P; returns (Model, "
-      "FitReport of the strain, FitReport of P(v), FitReport of the map on the measured P). "
-      "Keyword options as for fit_butterfly_strain_records.");
+      "FitReport of the strain, FitReport of P(v), FitReport of the map on the measured P, "
+      "leakage conductance g). Keyword options as for fit_butterfly_strain_records, and "
+      "fit_leakage (False) with sample_time (1.0 s): fit the leakage charge g * integral(v dt) "
+      "of the measured polarisation too (g >= 0), which the maps then leave out.");
 }
 
 }  // namespace hyst::python

@@ -16,6 +16,7 @@
 #include "hyst/data/branches.hpp"
 #include "hyst/data/corrections.hpp"
 #include "hyst/data/cycles.hpp"
+#include "hyst/data/leakage.hpp"
 #include "hyst/data/loop_metrics.hpp"
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/data/record_info.hpp"
@@ -184,6 +185,26 @@ void bind_corrections(py::module_& d) {
       },
       "values"_a, "reference"_a = "mean",
       "(values - offset, offset); reference 'mean', 'first' or 'midrange'.");
+  d.def("leakage_conductance", &data::leakage_conductance, "resistance"_a, "area_mm2"_a,
+        "g = 1 / (R A) in uC/cm^2 per V s for R [Ohm] and an electrode area A [mm^2] (e.g. an "
+        "aixACCT summary's Rav and a table's Area [mm2]).");
+  d.def(
+      "leakage_charge",
+      [](const InputArray& voltage, double sample_time) {
+        return to_array(data::leakage_charge(as_span(voltage, "voltage"), sample_time));
+      },
+      "voltage"_a, "sample_time"_a,
+      "Q[k] = integral of the voltage from sample 0 to k [V s], trapezoidal, Q[0] = 0.");
+  d.def(
+      "remove_leakage_charge",
+      [](const InputArray& voltage, const InputArray& polarisation, double sample_time,
+         double conductance) {
+        return to_array(data::remove_leakage_charge(as_span(voltage, "voltage"),
+                                                    as_span(polarisation, "polarisation"),
+                                                    sample_time, conductance));
+      },
+      "voltage"_a, "polarisation"_a, "sample_time"_a, "conductance"_a,
+      "P - g Q: a measured polarisation without the charge of a leakage conductance g.");
   d.def(
       "remove_drift",
       [](const InputArray& input, const InputArray& output, double band) {

@@ -18,6 +18,7 @@
 #include "detail/regressor_matrix.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
+#include "hyst/data/leakage.hpp"
 #include "hyst/identify/error_metrics.hpp"
 #include "hyst/models/preisach_relay_grid.hpp"
 #include "weight_fit.hpp"
@@ -417,10 +418,20 @@ std::vector<RecordView> views_of(std::span<const FitRecord> records) {
   return views;
 }
 
+// The direct form has no measured polarisation whose leakage could be fitted.
+void check_direct(const ButterflyFitOptions& options) {
+  check_options(options);
+  if (options.fit_leakage) {
+    throw Error(
+        fmt::format("{}: fit_leakage needs the measured polarisation (the two-stage fit)", kFit),
+        "fit_leakage");
+  }
+}
+
 ButterflyFit fit_one(std::span<const double> input, std::span<const double> output,
                      const ButterflyFitOptions& options) {
   const auto begin = Clock::now();
-  check_options(options);
+  check_direct(options);
   const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
   const RecordView record{input, parts.fit_input, parts.fit_output};
   FitReport report;
@@ -439,7 +450,7 @@ ButterflyFit fit_one(std::span<const double> input, std::span<const double> outp
 
 ButterflyFit fit_many(std::span<const FitRecord> records, const ButterflyFitOptions& options) {
   const auto begin = Clock::now();
-  check_options(options);
+  check_direct(options);
   if (options.validate_fraction != 0.0) {
     throw Error(fmt::format("{} of several records: validate_fraction = {} must be 0 (hold out a "
                             "record instead)",
@@ -474,23 +485,43 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
   const Preisach::Params grid = unit_grid(std::span(&p_record, 1), options);
   const Design design = design_of(std::span(&p_record, 1), grid, options.start);
 
-  // Stage 1: P(v) by NNLS with a free P offset.
-  auto stage1 = detail::nnls_with_offset(design.relays, design.output, true);
+  // Stage 1: P(v) by NNLS with a free P offset, and the leakage charge's conductance.
+  const auto relay_count = design.relays.cols();
+  Eigen::VectorXd leakage = Eigen::VectorXd::Zero(design.output.size());
+  Eigen::MatrixXd columns = design.relays;
+  if (options.fit_leakage) {
+    const auto charge = data::leakage_charge(input, options.sample_time);
+    leakage = Eigen::Map<const Eigen::VectorXd>(charge.data(), design.output.size());
+    columns.conservativeResize(Eigen::NoChange, relay_count + 1);
+    columns.col(relay_count) = leakage;
+  }
+  auto stage1 = detail::nnls_with_offset(std::move(columns), design.output, true);
+  const double conductance = options.fit_leakage ? stage1.x[relay_count] : 0.0;
   ButterflyStrain::Params params;
   params.polarisation = grid;
   params.polarisation.initial_state = preisach_start(options.start);
-  params.polarisation.everett.weights.assign(stage1.x.data(), stage1.x.data() + stage1.x.size());
+  params.polarisation.everett.weights.assign(stage1.x.data(), stage1.x.data() + relay_count);
   params.polarisation.offset = stage1.offset;
   const Preisach polarisation_model(params.polarisation);
   auto p_state = start_state(polarisation_model, input, options.start);
   const auto initial_state = p_state;
   const auto p_fit = simulate(polarisation_model, p_state, parts.fit_input);
+  std::vector<double> p_measured_fit = p_fit;  // the model of the measured P: leakage included
+  for (std::size_t k = 0; k < p_fit.size(); ++k)
+    p_measured_fit[k] += conductance * leakage[static_cast<Eigen::Index>(k)];
   FitReport polarisation_report = detail::weight_fit_report(
-      "preisach", "nnls (Lawson-Hanson) on relay weights", stage1,
-      static_cast<std::size_t>(stage1.x.size()) + 1, p_parts.fit_output, p_fit);
+      "preisach",
+      options.fit_leakage ? "nnls (Lawson-Hanson) on relay weights and leakage conductance"
+                          : "nnls (Lawson-Hanson) on relay weights",
+      stage1, static_cast<std::size_t>(stage1.x.size()) + 1, p_parts.fit_output, p_measured_fit);
   if (!p_parts.validation_input.empty()) {
-    polarisation_report.validation = error_metrics(
-        p_parts.validation_output, simulate(polarisation_model, p_state, p_parts.validation_input));
+    auto p_validation = simulate(polarisation_model, p_state, p_parts.validation_input);
+    if (options.fit_leakage) {
+      const auto charge = data::leakage_charge(input, options.sample_time);
+      for (std::size_t k = 0; k < p_validation.size(); ++k)
+        p_validation[k] += conductance * charge[parts.fit_input.size() + k];
+    }
+    polarisation_report.validation = error_metrics(p_parts.validation_output, p_validation);
   }
 
   // Stage 2: the map on the model's polarisation (the fitted chain) ...
@@ -522,10 +553,11 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
         error_metrics(parts.validation_output, simulate(model, state, parts.validation_input));
   }
 
-  // ... and on the measured polarisation, scored on its own.
-  const MapFit direct = fit_map(v, design.output, y, options.degree, options.fit_field_term);
+  // ... and on the measured polarisation without its leakage charge, scored on its own.
+  const Eigen::VectorXd p_measured = design.output - conductance * leakage;
+  const MapFit direct = fit_map(v, p_measured, y, options.degree, options.fit_field_term);
   const Eigen::VectorXd mapped =
-      map_columns(v, design.output, options.degree, true) * direct.coefficients;
+      map_columns(v, p_measured, options.degree, true) * direct.coefficients;
   const std::vector<double> mapped_samples(mapped.data(), mapped.data() + mapped.size());
   FitReport map_report;
   map_report.model = "butterfly_strain_map";
@@ -543,7 +575,8 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
   map_report.seconds = seconds;
   return {{std::move(model), initial_state, std::move(report)},
           std::move(polarisation_report),
-          std::move(map_report)};
+          std::move(map_report),
+          conductance};
 }
 
 }  // namespace butterfly_fit

@@ -85,6 +85,14 @@ FieldTable<ButterflyFitOptions> butterfly_fit_option_table() {
       .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations");
 }
 
+// The two-stage fit's options: the direct form's and the leakage of the measured polarisation.
+FieldTable<ButterflyFitOptions> butterfly_two_stage_option_table() {
+  using O = ButterflyFitOptions;
+  return butterfly_fit_option_table()
+      .add("fit_leakage", &O::fit_leakage, "", "fit the polarisation's leakage conductance")
+      .add("sample_time", &O::sample_time, "s", "Ts of the record (for the leakage charge)");
+}
+
 ButterflyFit fit_butterfly_record(std::span<const double> input, std::span<const double> output,
                                   const ButterflyFitOptions& options) {
   return fit_butterfly_strain(input, output, options);
@@ -133,11 +141,12 @@ ButterflyModelFit fit_butterfly_strain_model(std::span<const FitRecord> records,
 ButterflyTwoStageModelFit fit_butterfly_strain_model_with_polarisation(
     std::span<const double> input, std::span<const double> polarisation,
     std::span<const double> output, const nlohmann::json& options) {
+  static const auto table = detail::butterfly_two_stage_option_table();
   auto fit = fit_butterfly_strain_with_polarisation(input, polarisation, output,
-                                                    butterfly_fit_options(options));
+                                                    table.read(options, "fit options"));
   auto report = std::move(fit.fit.report);
   return {detail::butterfly_dynamic_model(std::move(fit.fit)), std::move(report),
-          std::move(fit.polarisation_report), std::move(fit.map_report)};
+          std::move(fit.polarisation_report), std::move(fit.map_report), fit.leakage_conductance};
 }
 
 }  // namespace hyst

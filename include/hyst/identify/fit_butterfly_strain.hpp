@@ -20,7 +20,10 @@
 //! export's V+, P1 and D1): (1) the Preisach weights of P(v) by NNLS, (2) the map by linear least
 //! squares on the model's polarisation, so that the chain v -> P -> y is the fitted model; the
 //! map is also fitted on the measured polarisation and reported on its own, which checks the
-//! strain-polarisation relation directly, with no hysteresis model in between.
+//! strain-polarisation relation directly, with no hysteresis model in between. With
+//! `fit_leakage`, stage 1 has one more non-negative unknown, the leakage conductance g of the
+//! measured polarisation (P_meas = P + g Q, hyst/data/leakage.hpp), and the map on the measured
+//! polarisation uses P_meas - g Q: a leakage charge is no polarisation and strains nothing.
 //!
 //! Records start in the stated state: `periodic` (default: each record is one period of a
 //! periodic drive in steady state, ButterflyStrain::periodic_state() of its whole input - the
@@ -72,6 +75,10 @@ struct ButterflyFitOptions {
   ButterflyFitStart start = ButterflyFitStart::periodic;
   std::size_t max_iterations = 300;  //!< Levenberg-Marquardt iterations (direct form), >= 1
   double validate_fraction = 0.0;    //!< one record: held out at its end, [0, 1)
+  //! Two stages: fit the leakage conductance g >= 0 of the measured polarisation with P(v)
+  //! (hyst/data/leakage.hpp); the maps then see P without the leakage charge g Q.
+  bool fit_leakage = false;
+  double sample_time = 1.0;  //!< Ts > 0 [s] of the record, for the leakage charge
 };
 
 struct ButterflyFit {
@@ -96,6 +103,9 @@ struct ButterflyTwoStageFit {
   //! The map y(v, P) fitted on the measured polarisation, scored there (model
   //! "butterfly_strain_map", no hysteresis model involved).
   FitReport map_report;
+  //! g [P units / (input units s)] with fit_leakage, else 0; the polarisation report is of
+  //! Preisach(v) + g Q + offset against the measured P.
+  double leakage_conductance = 0.0;
 };
 
 //! Two stages with measured polarisation (same length as input and output). Throws hyst::Error

@@ -36,9 +36,11 @@ struct ButterflyTwoStageModelFit {
   FitReport report;                     //!< of the strain
   FitReport polarisation_report;        //!< of P(v)
   FitReport map_report;                 //!< of y(v, P) on the measured polarisation
+  double leakage_conductance = 0.0;     //!< g with the option fit_leakage, else 0
 };
 
-//! fit_butterfly_strain_with_polarisation(), as a registered model.
+//! fit_butterfly_strain_with_polarisation(), as a registered model; the options also take
+//! fit_leakage and sample_time.
 ButterflyTwoStageModelFit fit_butterfly_strain_model_with_polarisation(
     std::span<const double> input, std::span<const double> polarisation,
     std::span<const double> output, const nlohmann::json& options);
