@@ -1,15 +1,18 @@
 // ns/sample of the further operator models: Ikuta's SMA model, the Krasnosel'skii-Pokrovskii grid
 // (N = 6, 21), Maxwell-slip (8 and 32 elements), the modified PI and its analytic inverse, the
-// rate-dependent PI, and, for the seed paper's comparison, the PI model with 8 backlash elements
-// and the Preisach model with 231 relays (fast and relay by relay), on the same input.
-// Items processed = samples, so Google Benchmark reports samples/s; ns/sample = 1e9 / rate.
+// rate-dependent PI, the butterfly strain model and its inverse, and, for the seed paper's
+// comparison, the PI model with 8 backlash elements and the Preisach model with 231 relays (fast
+// and relay by relay), on the same input. Items processed = samples, so Google Benchmark reports
+// samples/s; ns/sample = 1e9 / rate.
 
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "hyst/inverse/inverse_butterfly_strain.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
+#include "hyst/models/butterfly_strain.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
 #include "hyst/models/maxwell_slip.hpp"
@@ -103,6 +106,32 @@ void BM_InversePiCreep(benchmark::State& bench) {
                        pi_with_log_creep(static_cast<std::size_t>(bench.range(0)))));
 }
 
+// Butterfly strain: range(0) levels on [-1, 1], equal weights (F0 = 1), y = 0.2 v + P + 0.3 P^2
+// (monotone over the whole range, so that the inverse searches on every sample).
+hyst::ButterflyStrain butterfly_strain(std::size_t levels) {
+  hyst::ButterflyStrain::Params p;
+  p.polarisation.everett = {
+      .levels = levels,
+      .lower = -1.0,
+      .upper = 1.0,
+      .weights = hyst::uniform_relay_weights(
+          levels, 1.0 / static_cast<double>(hyst::preisach_relay_count(levels)))};
+  p.field_coefficient = 0.2;
+  p.polarisation_coefficients = {1.0, 0.3};
+  return hyst::ButterflyStrain(p);
+}
+
+void BM_ButterflyStrain(benchmark::State& bench) {
+  run_steps(bench, butterfly_strain(static_cast<std::size_t>(bench.range(0))));
+}
+
+// The branch test (2 N + 2 previews) and the bracketed search, on every sample.
+void BM_InverseButterflyStrain(benchmark::State& bench) {
+  run_steps(bench,
+            hyst::InverseButterflyStrain(butterfly_strain(static_cast<std::size_t>(bench.range(0))),
+                                         {.input_min = -1.0, .input_max = 1.0}));
+}
+
 // The seed comparison: 8 unweighted backlash elements, 231 unweighted relays.
 void BM_SeedPi8(benchmark::State& bench) {
   run_steps(bench, hyst::PrandtlIshlinskii({.thresholds = hyst::uniform_thresholds(8, 0.125),
@@ -133,6 +162,8 @@ BENCHMARK(BM_InverseModifiedPi);
 BENCHMARK(BM_RateDependentPi)->Arg(8)->Arg(16);
 BENCHMARK(BM_PiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_InversePiCreep)->Arg(8)->Arg(16);
+BENCHMARK(BM_ButterflyStrain)->Arg(16)->Arg(64);
+BENCHMARK(BM_InverseButterflyStrain)->Arg(16)->Arg(64);
 BENCHMARK(BM_SeedPi8);
 BENCHMARK(BM_SeedPreisach231);
 BENCHMARK(BM_SeedPreisach231RelayByRelay);
