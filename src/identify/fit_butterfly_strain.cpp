@@ -84,16 +84,11 @@ Preisach::Params unit_grid(std::span<const RecordView> records,
 }
 
 PreisachInitialState preisach_start(ButterflyFitStart start) {
-  switch (start) {
-    case ButterflyFitStart::positive_saturation:
-      return PreisachInitialState::positive_saturation;
-    case ButterflyFitStart::demagnetised:
-      return PreisachInitialState::demagnetised;
-    case ButterflyFitStart::periodic:
-    case ButterflyFitStart::negative_saturation:
-      break;
+  if (start == ButterflyFitStart::positive_saturation) {
+    return PreisachInitialState::positive_saturation;
   }
-  return PreisachInitialState::negative_saturation;
+  return start == ButterflyFitStart::demagnetised ? PreisachInitialState::demagnetised
+                                                  : PreisachInitialState::negative_saturation;
 }
 
 // The state a record starts from, for any Preisach-based model with periodic_state-like replay.
@@ -320,24 +315,6 @@ ButterflyStrain model_of(const Preisach::Params& grid, const Eigen::VectorXd& mu
   return ButterflyStrain(std::move(params));
 }
 
-double half_sum_of_squares(std::span<const double> measured, std::span<const double> predicted) {
-  double cost = 0.0;
-  for (std::size_t k = 0; k < measured.size(); ++k)
-    cost += 0.5 * (measured[k] - predicted[k]) * (measured[k] - predicted[k]);
-  return cost;
-}
-
-double best_constant_cost(std::span<const double> measured) {
-  double mean = 0.0;
-  for (double y : measured)
-    mean += y;
-  mean /= static_cast<double>(measured.size());
-  double cost = 0.0;
-  for (double y : measured)
-    cost += 0.5 * (y - mean) * (y - mean);
-  return cost;
-}
-
 // Simulates every record from its start and fills the report's costs and fit metrics.
 void score(FitReport& report, const ButterflyStrain& model, std::span<const RecordView> records,
            ButterflyFitStart start) {
@@ -349,8 +326,8 @@ void score(FitReport& report, const ButterflyStrain& model, std::span<const Reco
     measured.insert(measured.end(), record.output.begin(), record.output.end());
     predicted.insert(predicted.end(), y.begin(), y.end());
   }
-  report.initial_cost = best_constant_cost(measured);
-  report.final_cost = half_sum_of_squares(measured, predicted);
+  report.initial_cost = detail::best_constant_cost(measured);
+  report.final_cost = detail::half_sum_of_squares(measured, predicted);
   report.fit = error_metrics(measured, predicted);
 }
 
@@ -409,12 +386,9 @@ ButterflyStrain solve_direct(std::span<const RecordView> records,
 }
 
 std::vector<RecordView> views_of(std::span<const FitRecord> records) {
-  if (records.empty()) throw Error(fmt::format("{}: no records", kFit), "records");
   std::vector<RecordView> views;
-  for (std::size_t r = 0; r < records.size(); ++r) {
-    check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
-    views.push_back({records[r].input, records[r].input, records[r].output});
-  }
+  for (const auto& record : records)
+    views.push_back({record.input, record.input, record.output});
   return views;
 }
 
@@ -451,12 +425,7 @@ ButterflyFit fit_one(std::span<const double> input, std::span<const double> outp
 ButterflyFit fit_many(std::span<const FitRecord> records, const ButterflyFitOptions& options) {
   const auto begin = Clock::now();
   check_direct(options);
-  if (options.validate_fraction != 0.0) {
-    throw Error(fmt::format("{} of several records: validate_fraction = {} must be 0 (hold out a "
-                            "record instead)",
-                            kFit, options.validate_fraction),
-                "validate_fraction");
-  }
+  detail::check_several_records(records, options.validate_fraction, kFit);
   const auto views = views_of(records);
   FitReport report;
   auto model = solve_direct(views, options, report);
@@ -565,8 +534,8 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
   map_report.termination = Termination::converged;
   map_report.message = "closed-form least-squares solution (column-pivoting QR)";
   map_report.parameters = options.degree + 1 + (options.fit_field_term ? 1 : 0);
-  map_report.initial_cost = best_constant_cost(parts.fit_output);
-  map_report.final_cost = half_sum_of_squares(parts.fit_output, mapped_samples);
+  map_report.initial_cost = detail::best_constant_cost(parts.fit_output);
+  map_report.final_cost = detail::half_sum_of_squares(parts.fit_output, mapped_samples);
   map_report.fit = error_metrics(parts.fit_output, mapped_samples);
 
   const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();

@@ -165,15 +165,7 @@ PiCreepFit fit_prandtl_ishlinskii_creep(std::span<const FitRecord> records,
                                         const PiCreepFitOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   check_options(options);
-  if (options.validate_fraction != 0.0) {
-    throw Error(fmt::format("{} of several records: validate_fraction = {} must be 0 (hold out a "
-                            "record instead)",
-                            kFit, options.validate_fraction),
-                "validate_fraction");
-  }
-  if (records.empty()) throw Error(fmt::format("{}: no records", kFit), "records");
-  for (std::size_t r = 0; r < records.size(); ++r)
-    check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
+  detail::check_several_records(records, options.validate_fraction, kFit);
   auto solved = solve(records, options);
   std::vector<double> measured;
   std::vector<double> predicted;

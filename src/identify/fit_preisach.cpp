@@ -17,6 +17,7 @@
 #include "hyst/identify/data_split.hpp"
 #include "hyst/identify/nnls.hpp"
 #include "hyst/models/preisach_relay_grid.hpp"
+#include "weight_fit.hpp"
 
 namespace hyst {
 namespace {
@@ -81,28 +82,6 @@ WeightSolution solve_weights(Eigen::MatrixXd A, Eigen::VectorXd y, const Neighbo
   return solution;
 }
 
-double cost_of(std::span<const double> measured, std::span<const double> predicted) {
-  double cost = 0.0;
-  for (std::size_t k = 0; k < measured.size(); ++k) {
-    const double e = measured[k] - predicted[k];
-    cost += 0.5 * e * e;
-  }
-  return cost;
-}
-
-double best_constant_cost(std::span<const double> measured, bool fit_offset) {
-  double mean = 0.0;
-  if (fit_offset) {
-    for (double y : measured)
-      mean += y;
-    mean /= static_cast<double>(measured.size());
-  }
-  double cost = 0.0;
-  for (double y : measured)
-    cost += 0.5 * (y - mean) * (y - mean);
-  return cost;
-}
-
 void check_smoothness(double smoothness, std::string_view what) {
   if (!std::isfinite(smoothness) || smoothness < 0.0) {
     throw Error(fmt::format("{} smoothness = {} must be finite and >= 0", what, smoothness),
@@ -152,8 +131,8 @@ FitReport weight_fit_report(std::string model, std::string_view unknowns,
   report.message = termination_message(solution.nnls, solution.weights, short_name);
   report.iterations = solution.nnls.iterations;
   report.parameters = static_cast<std::size_t>(solution.weights.size()) + (fit_offset ? 1 : 0);
-  report.initial_cost = best_constant_cost(measured, fit_offset);
-  report.final_cost = cost_of(measured, predicted);
+  report.initial_cost = detail::best_constant_cost(measured, fit_offset);
+  report.final_cost = detail::half_sum_of_squares(measured, predicted);
   report.fit = error_metrics(measured, predicted);
   return report;
 }

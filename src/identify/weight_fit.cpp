@@ -64,6 +64,39 @@ OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offse
   return solution;
 }
 
+double half_sum_of_squares(std::span<const double> measured, std::span<const double> predicted) {
+  double cost = 0.0;
+  for (std::size_t k = 0; k < measured.size(); ++k)
+    cost += 0.5 * (measured[k] - predicted[k]) * (measured[k] - predicted[k]);
+  return cost;
+}
+
+double best_constant_cost(std::span<const double> measured, bool fit_offset) {
+  double mean = 0.0;
+  if (fit_offset) {
+    for (double y : measured)
+      mean += y;
+    mean /= static_cast<double>(measured.size());
+  }
+  double cost = 0.0;
+  for (double y : measured)
+    cost += 0.5 * (y - mean) * (y - mean);
+  return cost;
+}
+
+void check_several_records(std::span<const FitRecord> records, double validate_fraction,
+                           std::string_view who) {
+  if (validate_fraction != 0.0) {
+    throw Error(fmt::format("{} of several records: validate_fraction = {} must be 0 (hold out a "
+                            "record instead)",
+                            who, validate_fraction),
+                "validate_fraction");
+  }
+  if (records.empty()) throw Error(fmt::format("{}: no records", who), "records");
+  for (std::size_t r = 0; r < records.size(); ++r)
+    check_fit_record(records[r], fmt::format("records[{}]", r), {.min_samples = 2});
+}
+
 FitReport weight_fit_report(std::string_view name, std::string method, const OffsetNnls& solution,
                             std::size_t parameters, std::span<const double> measured,
                             std::span<const double> predicted) {
@@ -82,15 +115,8 @@ FitReport weight_fit_report(std::string_view name, std::string method, const Off
       zero, solution.x.size());
   report.iterations = solution.nnls.iterations;
   report.parameters = parameters;
-  double mean = 0.0;
-  for (double y : measured)
-    mean += y;
-  mean /= static_cast<double>(measured.size());
-  for (std::size_t k = 0; k < predicted.size(); ++k) {
-    const double e = measured[k] - predicted[k];
-    report.final_cost += 0.5 * e * e;
-    report.initial_cost += 0.5 * (measured[k] - mean) * (measured[k] - mean);
-  }
+  report.final_cost = half_sum_of_squares(measured, predicted);
+  report.initial_cost = best_constant_cost(measured);
   report.fit = error_metrics(measured, predicted);
   return report;
 }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "hyst/core/simulate.hpp"
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/identify/nnls.hpp"
 
@@ -37,6 +38,17 @@ struct OffsetNnls {
   NnlsResult nnls;
 };
 OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset);
+
+// 0.5 sum (measured - predicted)^2, the cost of a FitReport.
+double half_sum_of_squares(std::span<const double> measured, std::span<const double> predicted);
+// The cost of the best constant: the mean (or 0 without a fitted offset) - a report's
+// initial_cost.
+double best_constant_cost(std::span<const double> measured, bool fit_offset = true);
+
+// The records of a fit of several records: validate_fraction must be 0 (a record is held out
+// instead), at least one record, each valid with two samples or more. Messages start with `who`.
+void check_several_records(std::span<const FitRecord> records, double validate_fraction,
+                           std::string_view who);
 
 // Range max - min of the samples.
 double range_of(std::span<const double> samples);

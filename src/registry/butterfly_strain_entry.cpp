@@ -74,10 +74,8 @@ struct ButterflyCodec : CodecOf<ButterflyStrain, "butterfly_strain"> {
 
 FieldTable<ButterflyFitOptions> butterfly_fit_option_table() {
   using O = ButterflyFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("levels", &O::levels, "", "threshold levels of the polarisation's relay grid")
-      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
-      .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+  return add_grid_options(FieldTable<O>(Presence::optional),
+                          "threshold levels of the polarisation's relay grid")
       .add("degree", &O::degree, "", "degree N of the polynomial in P")
       .add("fit_field_term", &O::fit_field_term, "", "fit the linear term d v")
       .add("initial_state", &O::start, butterfly_fit_start_from_string,

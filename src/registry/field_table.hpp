@@ -352,4 +352,13 @@ FieldTable<O> add_play_weight_options(FieldTable<O> table) {
   return table;
 }
 
+// The options of the fits on a grid of levels over an input range (Preisach, KP, butterfly
+// strain): `levels` as `levels_description` says, and the range, the data's by default.
+template <class O>
+FieldTable<O> add_grid_options(FieldTable<O> table, std::string levels_description) {
+  return table.add("levels", &O::levels, "", std::move(levels_description))
+      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
+      .add("upper", &O::upper, "input units", "grid range (default: the data's)");
+}
+
 }  // namespace hyst::detail

@@ -49,10 +49,7 @@ struct KpCodec : CodecOf<KrasnoselskiiPokrovskii, "kp"> {
 
 FieldTable<KpFitOptions> krasnoselskii_pokrovskii_fit_option_table() {
   using O = KpFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("levels", &O::levels, "", "N cells")
-      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
-      .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+  return add_grid_options(FieldTable<O>(Presence::optional), "N cells")
       .add("ramp_cells", &O::ramp_cells, "", "ramp width in cells")
       .add("fit_offset", &O::fit_offset, "", "fit the output offset");
 }

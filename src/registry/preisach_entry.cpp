@@ -40,10 +40,7 @@ using PreisachAdapter = ModelAdapter<PreisachCodec>;
 
 FieldTable<PreisachWeightFitOptions> preisach_fit_option_table() {
   using O = PreisachWeightFitOptions;
-  return FieldTable<O>(Presence::optional)
-      .add("levels", &O::levels, "", "N threshold levels")
-      .add("lower", &O::lower, "input units", "grid range (default: the data's)")
-      .add("upper", &O::upper, "input units", "grid range (default: the data's)")
+  return add_grid_options(FieldTable<O>(Presence::optional), "N threshold levels")
       .add("layout", &O::layout, preisach_grid_layout_from_string, "cell_centred or endpoints")
       .add("initial_state", &O::initial_state, preisach_initial_state_from_string,
            "state the record starts from")
