@@ -864,6 +864,32 @@ assert 'sample_time' not in json.load(open('pi.json'))['info']['data']
   [ ! -e x.json ] || fail "a refused fit wrote x.json"
 }
 
+case_butterfly() {
+  # The measured 1.9 kV loop through the command line: fit under 5 %, inverse on a unipolar
+  # branch (200-800 V, exact), and across the butterfly's vertex: every sample "not invertible",
+  # the previous input held, one warning line (an error with --strict).
+  local mat="$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
+  expect_ok "$HYST" fit butterfly_strain --data "$mat" --input Vplus_19kv \
+    --output Displacement_19kv --out b.json
+  expect_stdout "butterfly_strain fitted by"
+  grep -qE "Fit: RMSE [0-9.]+, NRMSE [0-4]\.[0-9]+ %" "$WORK/stdout" ||
+    fail "1.9 kV fit NRMSE not under 5 %: $(cat "$WORK/stdout")"
+  awk 'BEGIN { print "v"; for (k = 0; k <= 200; ++k) printf "%.17g\n", 500 + 290 * sin(0.05 * k) }' \
+    >drive.csv
+  expect_ok "$HYST" simulate --model b.json --input drive.csv --column v --out target.csv
+  expect_ok "$HYST" invert --model b.json --target target.csv --column y --out v.csv \
+    --input-min 200 --input-max 800
+  expect_ok "$HYST" simulate --model b.json --input v.csv --column v --out reached.csv
+  expect_close reached.csv 2 target.csv 2 1e-6
+  run "$HYST" invert --model b.json --target target.csv --column y --out vb.csv \
+    --input-min -1900 --input-max 1900
+  [ "$STATUS" -eq 0 ] || { fail "exit status $STATUS"; show invert; }
+  grep -q "^hyst: warning: 201 of 201 samples not invertible.*previous input was held" \
+    "$WORK/stderr" || fail "warning: $(cat "$WORK/stderr")"
+  expect_error 1 "not invertible" "(--strict)" -- "$HYST" invert --model b.json \
+    --target target.csv --column y --out vs.csv --input-min -1900 --input-max 1900 --strict
+}
+
 case_data_info() {
   aixacct_file
   expect_ok "$HYST" data info "$AIX"
