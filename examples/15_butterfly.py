@@ -72,5 +72,28 @@ print(f"inverse on [200, 800] V: {inverse_report}, max error {np.abs(reached - t
 _, bipolar = fitted.inverse(input_min=-1900, input_max=1900).invert(targets)
 print(f"inverse on [-1900, 1900] V: {bipolar.not_invertible_samples} of {len(targets)} samples "
       "not invertible")
+
+# 5. Leakage? The polarisation of a lossy ceramic carries a leakage charge g * integral(v dt).
+#    At 1, 0.1 and 0.01 Hz: g fitted with P(v) (two stages) against g = 1 / (Rav A) from the
+#    instrument's summary; and what removing it does to the strain's map on the measured P.
+export = hyst.io.read_aixacct(folder / "RMN_TRAP_SLOW.dat")
+numbers = list(export.summary.column("Table No"))
+print("table  rate     g fitted   g(Rav)    P(v) NRMSE [%]   D1 from P1 NRMSE [%]")
+print("                 [uC/cm2/(V s)]        plain  leakage   plain  leakage")
+for number in (6, 1, 2):
+    table = export.measurement(number)
+    time = table.column("Time")
+    sample_time = time[1] - time[0]
+    rav = export.summary.column("Rav")[numbers.index(number)]
+    g_rav = hyst.data.leakage_conductance(rav, table.metadata_number("Area [mm2]"))
+    args = (table.column("V+"), table.column("P1"), table.column("D1"))
+    _, _, p_plain, map_plain, _ = hyst.fit_butterfly_strain_with_polarisation(*args)
+    _, _, p_leak, map_leak, g = hyst.fit_butterfly_strain_with_polarisation(
+        *args, fit_leakage=True, sample_time=sample_time)
+    rate = table.metadata_number("Hysteresis Frequency [Hz]")
+    print(f"{number:5}  {rate:<5g} Hz  {g:.3g}  {g_rav:.3g}   {p_plain.fit.nrmse_percent:5.2f}  "
+          f"{p_leak.fit.nrmse_percent:5.2f}     {map_plain.fit.nrmse_percent:5.2f}  "
+          f"{map_leak.fit.nrmse_percent:5.2f}")
+
 if not inverse_report.ok or bipolar.not_invertible_samples == 0 or report.fit.nrmse_percent > 5:
     sys.exit(1)
