@@ -14,6 +14,7 @@
 
 #include "../core/detail/enum_names.hpp"
 #include "detail/convergence.hpp"
+#include "detail/multistart_driver.hpp"
 #include "detail/multistart_fit.hpp"
 #include "detail/regressor_matrix.hpp"
 #include "hyst/core/error.hpp"
@@ -30,7 +31,8 @@ namespace butterfly_fit {
 
 using Clock = std::chrono::steady_clock;
 constexpr std::string_view kFit = "butterfly strain fit";
-constexpr std::size_t kRefinedStarts = 3;  // Levenberg-Marquardt runs from the best starts
+constexpr std::size_t kScreeningIterations = 10;  // per start
+constexpr std::size_t kRefinedStarts = 3;         // screened starts continued
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 void check_options(const ButterflyFitOptions& options) {
@@ -258,7 +260,8 @@ struct Start {
   double residual = 0.0;
 };
 
-// The coercive-density starts (file comment of the header), best first.
+// The coercive-density starts (file comment of the header), v_c = 0.1, 0.2, ... 0.9 of the
+// half range.
 std::vector<Start> initial_guesses(const Design& design, const Preisach::Params& grid,
                                    const ButterflyFitOptions& options) {
   const double half = 0.5 * (grid.everett.upper - grid.everett.lower);
@@ -269,37 +272,48 @@ std::vector<Start> initial_guesses(const Design& design, const Preisach::Params&
     MapFit map = fit_map(design.input, P, design.output, options.degree, options.fit_field_term);
     starts.push_back({std::move(mu), std::move(map.coefficients), map.residual});
   }
-  std::sort(starts.begin(), starts.end(),
-            [](const Start& a, const Start& b) { return a.residual < b.residual; });
   return starts;
 }
 
-// One Levenberg-Marquardt run from `start` (updated in place).
+// One Levenberg-Marquardt run of at most `iterations` from `params`, as the multistart engine
+// (detail/multistart_driver.hpp) ranks and continues it.
 struct Run {
-  ceres::Solver::Summary summary;
-  bool stagnated = false;
-  std::string stagnation_message;
+  Start params;
+  double cost = std::numeric_limits<double>::infinity();
+  bool usable = false;
+  bool finished = false;  // converged or stagnated: no continuation
+  std::size_t iterations = 0;
+  Termination termination = Termination::failed;
+  std::string message;
 };
-Run refine(Start& start, const Design& design, const ButterflyFitOptions& options, double gauge) {
+Run refine(Start params, const Design& design, const ButterflyFitOptions& options, double gauge,
+           std::size_t iterations) {
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
   problem.AddResidualBlock(new LatentStrainCost(design, options.degree, gauge), nullptr,
-                           start.mu.data(), start.map.data());
-  for (Eigen::Index r = 0; r < start.mu.size(); ++r)
-    problem.SetParameterLowerBound(start.mu.data(), static_cast<int>(r), 0.0);
+                           params.mu.data(), params.map.data());
+  for (Eigen::Index r = 0; r < params.mu.size(); ++r)
+    problem.SetParameterLowerBound(params.mu.data(), static_cast<int>(r), 0.0);
   if (!options.fit_field_term) {
-    problem.SetManifold(start.map.data(),
-                        new ceres::SubsetManifold(static_cast<int>(start.map.size()), {1}));
+    problem.SetManifold(params.map.data(),
+                        new ceres::SubsetManifold(static_cast<int>(params.map.size()), {1}));
   }
-  auto solver =
-      detail::levenberg_marquardt_options(options.max_iterations, detail::kFunctionTolerance);
+  auto solver = detail::levenberg_marquardt_options(iterations, detail::kFunctionTolerance);
   detail::StagnationStop stagnation;
   solver.callbacks.push_back(&stagnation);
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
   Run run;
-  ceres::Solve(solver, &problem, &run.summary);
-  run.stagnated = stagnation.stopped();
-  if (run.stagnated) run.stagnation_message = stagnation.message();
+  run.params = std::move(params);
+  run.cost = summary.final_cost;
+  run.usable = summary.IsSolutionUsable() && run.params.mu.allFinite() &&
+               run.params.map.allFinite() && run.params.mu.sum() > 0.0;
+  run.finished = stagnation.stopped() || summary.termination_type == ceres::CONVERGENCE;
+  run.iterations = summary.iterations.size();
+  run.termination =
+      stagnation.stopped() ? Termination::converged : detail::termination_of_ceres(summary);
+  run.message = stagnation.stopped() ? stagnation.message() : summary.message;
   return run;
 }
 
@@ -345,26 +359,27 @@ ButterflyStrain solve_direct(std::span<const RecordView> records,
   const double mean = design.output.mean();
   const double sigma = std::sqrt((design.output.array() - mean).square().mean());
   const double gauge = sigma * std::sqrt(static_cast<double>(design.output.size()));
-  // The cost is not convex: Levenberg-Marquardt from the best few starts, the lowest cost kept.
-  auto starts = initial_guesses(design, grid, options);
-  starts.resize(std::min<std::size_t>(starts.size(), kRefinedStarts));
-  std::size_t best = 0;
-  std::vector<Run> runs;
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    runs.push_back(refine(starts[i], design, options, gauge));
-    if (runs[i].summary.final_cost < runs[best].summary.final_cost) best = i;
+  // The cost is not convex: every start screened by a short run, the best few continued, the
+  // lowest cost kept (the multistart engine of every Ceres-based fit).
+  const auto starts = initial_guesses(design, grid, options);
+  const detail::MultistartBudget budget{.screening_iterations = kScreeningIterations,
+                                        .refined_starts = kRefinedStarts,
+                                        .max_iterations = options.max_iterations};
+  const auto runs = detail::run_multistart(
+      starts.size(), budget,
+      [&](std::size_t s, std::size_t iterations) {
+        return refine(starts[s], design, options, gauge, iterations);
+      },
+      [&](const Run& run, std::size_t iterations) {
+        return refine(run.params, design, options, gauge, iterations);
+      });
+  if (!runs.found || !runs.best.usable) {
+    throw Error(fmt::format("{}: no start gave a usable solution ({})", kFit,
+                            runs.found ? runs.best.message : "every run failed"));
   }
-  Start& start = starts[best];
-  const auto& summary = runs[best].summary;
-  std::size_t iterations = 0;
-  for (const auto& run : runs)
-    iterations += run.summary.iterations.size();
-
+  Start start = runs.best.params;
   // F0 = 1 exactly: P -> P / F0, q_n -> q_n F0^n.
   const double total = start.mu.sum();
-  if (!(total > 0.0) || !start.map.allFinite()) {
-    throw Error(fmt::format("{}: the optimisation failed ({})", kFit, summary.message));
-  }
   start.mu /= total;
   double power = 1.0;
   for (Eigen::Index n = 2; n < start.map.size(); ++n) {
@@ -374,12 +389,11 @@ ButterflyStrain solve_direct(std::span<const RecordView> records,
   report.model = "butterfly_strain";
   report.method =
       "levenberg-marquardt (ceres) on relay weights and strain map, latent polarisation";
-  report.termination =
-      runs[best].stagnated ? Termination::converged : detail::termination_of_ceres(summary);
+  report.termination = runs.best.termination;
   report.message =
-      fmt::format("best of {} starts: {}", runs.size(),
-                  runs[best].stagnated ? runs[best].stagnation_message : summary.message);
-  report.iterations = iterations;
+      fmt::format("start {} of {} (coercive voltage {}/10 of the half range): {}",
+                  runs.best_start + 1, starts.size(), runs.best_start + 1, runs.best.message);
+  report.iterations = runs.iterations;
   report.parameters =
       static_cast<std::size_t>(m) - 1 + options.degree + 1 + (options.fit_field_term ? 1 : 0);
   return model_of(grid, start.mu, start.map, options.start);

@@ -66,8 +66,8 @@ TEST(FitButterflyStrain, DirectFormFitsAGeneratedButterfly) {
   const auto y = butterfly_periodic_output(model, v);
   const auto fit = fit_butterfly_strain(v, y, {.levels = 12, .lower = -1.0, .upper = 1.0});
   EXPECT_EQ(fit.report.termination, Termination::converged) << fit.report.message;
-  // A non-convex problem: Levenberg-Marquardt ends in a local minimum near the truth (0.84 % on
-  // this record), and the strain, not each weight, is what is reproduced.
+  // A non-convex problem: Levenberg-Marquardt ends in a local minimum near the truth (about 1 %
+  // on this record), and the strain, not each weight, is what is reproduced.
   EXPECT_LT(fit.report.fit.nrmse_percent, 1.5) << fit.report.full();
   EXPECT_NEAR(fit.model.polarisation_model().total_weight(), 1.0, 1e-12);
   // The latent polarisation is the generating one up to its sign (q_1 odd, q_2 even).
