@@ -32,12 +32,15 @@ namespace butterfly_fit {
 using Clock = std::chrono::steady_clock;
 constexpr std::string_view kFit = "butterfly strain fit";
 constexpr std::size_t kScreeningIterations = 10;  // per start
+constexpr std::size_t kDefaultLevels = 16;        // of the relay grid, when the record allows
 constexpr std::size_t kRefinedStarts = 3;         // screened starts continued
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 void check_options(const ButterflyFitOptions& options) {
-  if (options.levels < 1 || options.levels > 64) {
-    throw Error(fmt::format("{}: levels = {} must be in [1, 64]", kFit, options.levels), "levels");
+  if (options.levels > 64) {
+    throw Error(
+        fmt::format("{}: levels = {} must be in [1, 64] (or 0: automatic)", kFit, options.levels),
+        "levels");
   }
   if (options.degree < 1 || options.degree > 8) {
     throw Error(fmt::format("{}: degree = {} must be in [1, 8]", kFit, options.degree), "degree");
@@ -61,18 +64,30 @@ struct RecordView {
   std::span<const double> output;
 };
 
+// `levels`, or when 0 the most levels up to kDefaultLevels whose relays number at most half the
+// `samples`, at least 2.
+std::size_t grid_levels(std::size_t levels, std::size_t samples) {
+  if (levels > 0) return levels;
+  std::size_t automatic = kDefaultLevels;
+  while (automatic > 2 && 2 * preisach_relay_count(automatic) > samples)
+    --automatic;
+  return automatic;
+}
+
 // The relay grid with unit weights on the fit's input range.
 Preisach::Params unit_grid(std::span<const RecordView> records,
                            const ButterflyFitOptions& options) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
+  std::size_t samples = 0;
   for (const auto& record : records) {
+    samples += record.input.size();
     const auto [min, max] = std::minmax_element(record.input.begin(), record.input.end());
     lo = std::min(lo, *min);
     hi = std::max(hi, *max);
   }
   Preisach::Params params;
-  params.everett.levels = options.levels;
+  params.everett.levels = grid_levels(options.levels, samples);
   params.everett.lower = options.lower.value_or(lo);
   params.everett.upper = options.upper.value_or(hi);
   if (!(params.everett.lower < params.everett.upper)) {
@@ -81,7 +96,7 @@ Preisach::Params unit_grid(std::span<const RecordView> records,
                             kFit, params.everett.lower, params.everett.upper),
                 "upper");
   }
-  params.everett.weights = uniform_relay_weights(options.levels, 1.0);
+  params.everett.weights = uniform_relay_weights(params.everett.levels, 1.0);
   return params;
 }
 

@@ -19,7 +19,7 @@ namespace {
 FieldTable<Preisach::Params> polarisation_table() {
   using Q = Preisach::Params;
   return FieldTable<Q>()
-      .add_all(&Q::everett, relay_grid_everett_table())
+      .add_all(&Q::everett, relay_grid_everett_table("P units"))
       .add("polarisation_offset", &Q::offset, "P units", "offset of the polarisation",
            Presence::optional)
       .add("initial_state", &Q::initial_state, preisach_initial_state_from_string,

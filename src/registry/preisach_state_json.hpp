@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -21,14 +22,15 @@
 
 namespace hyst::detail {
 
-// The relay grid's fields: levels, input range, weights, layout.
-inline FieldTable<RelayGridEverett::Params> relay_grid_everett_table() {
+// The relay grid's fields: levels, input range, weights (in `weight_unit`), layout.
+inline FieldTable<RelayGridEverett::Params> relay_grid_everett_table(
+    std::string weight_unit = "output units") {
   using E = RelayGridEverett::Params;
   return FieldTable<E>()
       .add("levels", &E::levels, "", "N threshold levels: N(N+1)/2 relays alpha >= beta")
       .add("lower", &E::lower, "input units", "lower end of the input range (negative saturation)")
       .add("upper", &E::upper, "input units", "upper end of the input range (positive saturation)")
-      .add("weights", &E::weights, "output units",
+      .add("weights", &E::weights, std::move(weight_unit),
            "mu >= 0 per relay, relay (i, j) at index i(i+1)/2 + j")
       .add("layout", &E::layout, preisach_grid_layout_from_string, "cell_centred or endpoints",
            Presence::optional);

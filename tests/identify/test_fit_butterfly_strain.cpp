@@ -160,6 +160,22 @@ TEST(FitButterflyStrain, MeasuredLoopAt19kVFitsWithinFivePercent) {
   EXPECT_LT(fit.report.fit.rmse, 0.05 * 1480.0);
 }
 
+// By default a short record gets fewer levels: at most half as many relays as samples.
+TEST(FitButterflyStrain, ShortRecordGetsFewerLevels) {
+  auto v = bipolar_triangle(0.98);
+  v.resize(60);
+  const auto y = butterfly_periodic_output(butterfly_generating_model(), v);
+  const auto fit = fit_butterfly_strain(v, y);
+  // 7 levels: 28 relays <= 30; 8 levels would be 36.
+  EXPECT_EQ(fit.model.params().polarisation.everett.levels, 7U);
+  EXPECT_EQ(fit_butterfly_strain(
+                bipolar_triangle(0.98),
+                butterfly_periodic_output(butterfly_generating_model(), bipolar_triangle(0.98)))
+                .model.params()
+                .polarisation.everett.levels,
+            16U);
+}
+
 TEST(FitButterflyStrain, RejectsBadOptionsAndData) {
   const auto v = bipolar_triangle(0.98);
   const auto y = butterfly_periodic_output(butterfly_generating_model(), v);

@@ -66,7 +66,9 @@ constexpr EnumNames<ButterflyFitStart, 4> enumerator_names(ButterflyFitStart) {
 ButterflyFitStart butterfly_fit_start_from_string(std::string_view text);
 
 struct ButterflyFitOptions {
-  std::size_t levels = 16;  //!< threshold levels of the relay grid (1 .. 64)
+  //! Threshold levels of the relay grid (1 .. 64); 0 = automatic: 16, or fewer for a short record
+  //! (at most half as many relays as samples fitted).
+  std::size_t levels = 0;
   //! Input range of the grid [input units]; not set = min and max of the fitted inputs.
   std::optional<double> lower = std::nullopt;
   std::optional<double> upper = std::nullopt;
