@@ -33,12 +33,18 @@ def test_inverse_reports_samples_that_are_not_invertible():
     assert hyst.InverseStatus.not_invertible.name == "not_invertible"
 
 
+def _equal_weight_grid(levels):
+    """A relay grid on [-1, 1] with equal weights summing to 1 (model-file parameters)."""
+    relays = levels * (levels + 1) // 2
+    return {"levels": levels, "lower": -1.0, "upper": 1.0,
+            "weights": list(np.full(relays, 1.0 / relays))}
+
+
 def _two_stage_record(levels=8):
     grid = np.linspace(-1, 1, 200)
     v = np.concatenate([grid, grid[::-1]])
     truth = hyst.Model("butterfly_strain", {
-        "levels": levels, "lower": -1.0, "upper": 1.0,
-        "weights": list(np.full(levels * (levels + 1) // 2, 1.0 / (levels * (levels + 1) // 2))),
+        **_equal_weight_grid(levels),
         "field_coefficient": 0.5, "polarisation_coefficients": [0.3, 1.2], "offset": 2.0})
     y = truth.simulate(v)
     return v, y, truth
@@ -48,9 +54,7 @@ def test_two_stage_fit_recovers_a_generated_map():
     v, y, _ = _two_stage_record()
     # The polarisation of the generating relays, computed independently as a Preisach model.
     levels = 8
-    preisach = hyst.Model("preisach", {
-        "levels": levels, "lower": -1.0, "upper": 1.0,
-        "weights": list(np.full(levels * (levels + 1) // 2, 1.0 / (levels * (levels + 1) // 2)))})
+    preisach = hyst.Model("preisach", _equal_weight_grid(levels))
     P = preisach.simulate(v)
     np.testing.assert_allclose(y, 2.0 + 0.5 * v + 0.3 * P + 1.2 * P**2, atol=1e-12)
     model, report, p_report, map_report, g = hyst.fit_butterfly_strain_with_polarisation(
@@ -65,9 +69,7 @@ def test_two_stage_fit_recovers_a_generated_map():
 def test_two_stage_fit_separates_a_leakage_charge():
     v, y, _ = _two_stage_record()
     levels = 8
-    preisach = hyst.Model("preisach", {
-        "levels": levels, "lower": -1.0, "upper": 1.0,
-        "weights": list(np.full(levels * (levels + 1) // 2, 1.0 / (levels * (levels + 1) // 2)))})
+    preisach = hyst.Model("preisach", _equal_weight_grid(levels))
     ts, g = 0.01, 0.05
     charge = hyst.data.leakage_charge(v, ts)
     # The trapezoidal integral, by hand for the first samples of the ramp.

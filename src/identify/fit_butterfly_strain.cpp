@@ -485,11 +485,13 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
 
   // Stage 1: P(v) by NNLS with a free P offset, and the leakage charge's conductance.
   const auto relay_count = design.relays.cols();
-  Eigen::VectorXd leakage = Eigen::VectorXd::Zero(design.output.size());
+  // The leakage charge of the whole record (fit and held-out part), or none.
+  const std::vector<double> charge = options.fit_leakage
+                                         ? data::leakage_charge(input, options.sample_time)
+                                         : std::vector<double>(input.size(), 0.0);
+  const Eigen::Map<const Eigen::VectorXd> leakage(charge.data(), design.output.size());
   Eigen::MatrixXd columns = design.relays;
   if (options.fit_leakage) {
-    const auto charge = data::leakage_charge(input, options.sample_time);
-    leakage = Eigen::Map<const Eigen::VectorXd>(charge.data(), design.output.size());
     columns.conservativeResize(Eigen::NoChange, relay_count + 1);
     columns.col(relay_count) = leakage;
   }
@@ -506,7 +508,7 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
   const auto p_fit = simulate(polarisation_model, p_state, parts.fit_input);
   std::vector<double> p_measured_fit = p_fit;  // the model of the measured P: leakage included
   for (std::size_t k = 0; k < p_fit.size(); ++k)
-    p_measured_fit[k] += conductance * leakage[static_cast<Eigen::Index>(k)];
+    p_measured_fit[k] += conductance * charge[k];
   FitReport polarisation_report = detail::weight_fit_report(
       "preisach",
       options.fit_leakage ? "nnls (Lawson-Hanson) on relay weights and leakage conductance"
@@ -514,11 +516,8 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
       stage1, static_cast<std::size_t>(stage1.x.size()) + 1, p_parts.fit_output, p_measured_fit);
   if (!p_parts.validation_input.empty()) {
     auto p_validation = simulate(polarisation_model, p_state, p_parts.validation_input);
-    if (options.fit_leakage) {
-      const auto charge = data::leakage_charge(input, options.sample_time);
-      for (std::size_t k = 0; k < p_validation.size(); ++k)
-        p_validation[k] += conductance * charge[parts.fit_input.size() + k];
-    }
+    for (std::size_t k = 0; k < p_validation.size(); ++k)
+      p_validation[k] += conductance * charge[parts.fit_input.size() + k];
     polarisation_report.validation = error_metrics(p_parts.validation_output, p_validation);
   }
 
