@@ -11,6 +11,7 @@
 
 #include "hyst/inverse/inverse_butterfly_strain.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
+#include "hyst/inverse/inverse_modified_prandtl_ishlinskii_creep.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/butterfly_strain.hpp"
 #include "hyst/models/ikuta_sma.hpp"
@@ -106,6 +107,23 @@ void BM_InversePiCreep(benchmark::State& bench) {
                        pi_with_log_creep(static_cast<std::size_t>(bench.range(0)))));
 }
 
+// The same with dead zones after it (saturating beyond +-0.6, the modified PI with creep).
+hyst::ModifiedPrandtlIshlinskiiCreep modified_pi_with_log_creep(std::size_t plays) {
+  hyst::ModifiedPrandtlIshlinskiiCreep::Params p;
+  p.pi_creep = pi_with_log_creep(plays).params();
+  p.dead_zone = {{-0.6, -0.3, 0.0, 0.3, 0.6}, {-0.3, -0.2, 1.0, -0.2, -0.3}};
+  return hyst::ModifiedPrandtlIshlinskiiCreep(p);
+}
+
+void BM_ModifiedPiCreep(benchmark::State& bench) {
+  run_steps(bench, modified_pi_with_log_creep(static_cast<std::size_t>(bench.range(0))));
+}
+
+void BM_InverseModifiedPiCreep(benchmark::State& bench) {
+  run_steps(bench, hyst::InverseModifiedPrandtlIshlinskiiCreep(
+                       modified_pi_with_log_creep(static_cast<std::size_t>(bench.range(0)))));
+}
+
 // Butterfly strain: range(0) levels on [-1, 1], equal weights (F0 = 1), y = 0.2 v + P + 0.3 P^2
 // (monotone over the whole range, so that the inverse searches on every sample).
 hyst::ButterflyStrain butterfly_strain(std::size_t levels) {
@@ -162,6 +180,8 @@ BENCHMARK(BM_InverseModifiedPi);
 BENCHMARK(BM_RateDependentPi)->Arg(8)->Arg(16);
 BENCHMARK(BM_PiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_InversePiCreep)->Arg(8)->Arg(16);
+BENCHMARK(BM_ModifiedPiCreep)->Arg(8)->Arg(16);
+BENCHMARK(BM_InverseModifiedPiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_ButterflyStrain)->Arg(16)->Arg(64);
 BENCHMARK(BM_InverseButterflyStrain)->Arg(16)->Arg(64);
 BENCHMARK(BM_SeedPi8);

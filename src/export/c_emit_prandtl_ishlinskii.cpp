@@ -57,27 +57,6 @@ static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
 
 )";
 
-constexpr std::string_view kDeadZoneFunction =
-    R"(/* S(x) = sum_i g_i S_{d_i}(x), S_d(x) = max(x - d, 0) for d > 0, x for d = 0, min(x - d, 0)
-   for d < 0 (the library's DeadZoneSuperposition, i in order). */
-static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_real x) {
-  @_real y = #(0.0);
-  unsigned int i;
-  for (i = 0; i < @_DEAD_ZONES; ++i) {
-    const @_real d = thresholds[i];
-    @_real zone = x;
-    if (d > #(0.0)) {
-      zone = x - d < #(0.0) ? #(0.0) : x - d;
-    } else if (d < #(0.0)) {
-      zone = #(0.0) < x - d ? #(0.0) : x - d;
-    }
-    y += weights[i] * zone;
-  }
-  return y;
-}
-
-)";
-
 std::string state_tables(const CWriter& writer, std::string_view name,
                          const std::vector<double>& init, const std::vector<double>& reset) {
   return CWriter::fill(
@@ -176,24 +155,6 @@ typedef struct {
   return code;
 }
 
-namespace {
-
-// The model's output limits as C statements; none when they are infinite (no clamp).
-std::string output_limits(const ModifiedPrandtlIshlinskii::Params& p, const CWriter& writer) {
-  std::string text;
-  if (std::isfinite(p.output_min)) {
-    text +=
-        CWriter::fill("  if (output < %L%) output = %L%;\n", {{"L", writer.number(p.output_min)}});
-  }
-  if (std::isfinite(p.output_max)) {
-    text +=
-        CWriter::fill("  if (output > %U%) output = %U%;\n", {{"U", writer.number(p.output_max)}});
-  }
-  return text;
-}
-
-}  // namespace
-
 CModelCode emit_c(const ModifiedPrandtlIshlinskii& mpi,
                   const ModifiedPrandtlIshlinskii::State& state, const CWriter& writer,
                   const CExportOptions& options) {
@@ -227,7 +188,7 @@ typedef struct {
                 model_declarations();
   code.source =
       std::string(c_play_functions()) + std::string(kCopyFunction) +
-      std::string(kDeadZoneFunction) +
+      std::string(c_dead_zone_function()) +
       CWriter::fill(
           "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %Q%,\n    %D%,\n    %G%,\n"
           "    %OFF%};\n\n",
@@ -243,7 +204,7 @@ typedef struct {
                                        state->play, @_OPERATORS, input);
   @_real output = params->offset + @_dead_zones(params->dead_zone_thresholds,
                                                 params->dead_zone_weights, hysteresis);
-)" + output_limits(p, writer) +
+)" + c_output_limits(writer, p.output_min, p.output_max) +
       "  return output;\n}\n";
   if (!code.has_inverse) return code;
 

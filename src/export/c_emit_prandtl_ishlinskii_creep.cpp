@@ -1,8 +1,12 @@
-// C emitter of the PI model with creep and its exact inverse (prandtl_ishlinskii_creep.hpp,
-// inverse_prandtl_ishlinskii_creep.hpp). The lags' decays a_i = exp(-Ts / tau_i) are exported as
-// the library computed them, so the C step repeats the library's operations in its order.
+// C emitters of the PI model with creep and of the modified PI model with creep, with their exact
+// inverses (prandtl_ishlinskii_creep.hpp, modified_prandtl_ishlinskii_creep.hpp and their
+// inverses). The modified model is the same code with the dead zones, the output offset and
+// limits after the step and the inverse dead zones before the inverse step. The lags' decays
+// a_i = exp(-Ts / tau_i) are exported as the library computed them, so the C step repeats the
+// library's operations in its order.
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +28,7 @@ constexpr std::string_view kCreepTypes = R"(#define @_OPERATORS %N%
 #define @_LAGS %L%
 /* Storage of the lags: @_LAGS * @_OPERATORS, at least 1 (C has no empty arrays). */
 #define @_CREEP_SIZE %SIZE%
-
+%DEAD_ZONE_SIZE%
 /* Parameters: thresholds r_j [input units], weights p_j, the lags' decays a_i = exp(-Ts / tau_i)
    at the sample time Ts = %TS% s, creep weights c_ij (row i: lag, column j: play) and the
    offset y_off. */
@@ -34,7 +38,7 @@ typedef struct {
   @_real decay[@_CREEP_SIZE];
   @_real creep_weights[@_CREEP_SIZE];
   @_real offset;
-} @_params;
+%SHAPE_FIELDS%} @_params;
 
 /* State: the play outputs w_j and the lags z_ij [input units]. */
 typedef struct {
@@ -74,7 +78,7 @@ void @_reset(@_state *state) {
     state->play[j] = @_play(input, params->thresholds[j], state->play[j]);
     output += params->weights[j] * state->play[j];
   }
-%LAG_STEP%  return output;
+%LAG_STEP%%SHAPE%  return output;
 }
 )";
 
@@ -88,7 +92,7 @@ typedef struct {
   @_real instantaneous[@_OPERATORS];
   @_real input_min;
   @_real input_max;
-} @_inverse_params;
+%INVERSE_SHAPE_FIELDS%} @_inverse_params;
 
 /* State of the inverse: the model's state and the inverse operator's plays wh_j. */
 typedef struct {
@@ -132,7 +136,7 @@ static void @_resynchronise(const @_inverse_params *params, @_inverse_state *sta
   @_real shifted;
   @_real input;
   unsigned int j;
-%LAG_MEMORY%  shifted = target - model->offset - memory;
+%LAG_MEMORY%  shifted = %TARGET% - model->offset - memory;
   for (j = 0; j < @_OPERATORS; ++j)
     state->play[j] = @_play(shifted, params->thresholds[j], state->play[j]);
   for (j = 0; j < @_OPERATORS; ++j) sum += params->weights[j] * state->play[j];
@@ -184,47 +188,92 @@ std::string creep_state_table(const CWriter& writer, std::string_view name, std:
                         {"V", writer.table(padded_for_c(values))}});
 }
 
-}  // namespace
+// What follows the PI with creep in the modified model: S, its inverse, y_off and the limits.
+struct Shaping {
+  DeadZoneSuperposition::Params dead_zone;
+  DeadZoneSuperposition::Params inverse;  // empty when S is not invertible
+  double offset = 0.0;
+  double output_min = 0.0;
+  double output_max = 0.0;
+};
 
-CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
-                  const CWriter& writer, const CExportOptions& options) {
+// The fields and statements of the shaping, or none for the PI with creep.
+struct ShapingText {
+  std::string size;
+  std::string fields;
+  std::string step;
+  std::string inverse_fields;
+  std::string target = "target";
+};
+
+ShapingText shaping_text(const std::optional<Shaping>& shaping, const CWriter& writer) {
+  if (!shaping) return {};
+  ShapingText text;
+  text.size = fmt::format("#define @_DEAD_ZONES {}\n", shaping->dead_zone.thresholds.size());
+  text.fields =
+      "  @_real dead_zone_thresholds[@_DEAD_ZONES]; /* S: d_i [output units] */\n"
+      "  @_real dead_zone_weights[@_DEAD_ZONES];    /* g_i */\n"
+      "  @_real output_offset;                      /* y_off */\n";
+  text.step =
+      "  output = params->output_offset + @_dead_zones(params->dead_zone_thresholds,\n"
+      "                                                params->dead_zone_weights, output);\n" +
+      c_output_limits(writer, shaping->output_min, shaping->output_max);
+  text.inverse_fields =
+      "  @_real dead_zone_thresholds[@_DEAD_ZONES]; /* S^-1: d'_i */\n"
+      "  @_real dead_zone_weights[@_DEAD_ZONES];    /* g'_i */\n"
+      "  @_real output_offset;                      /* y_off */\n";
+  text.target =
+      "@_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights,\n"
+      "                         target - params->output_offset)";
+  return text;
+}
+
+// The code of a PI with creep `model`, followed by `shaping` when it has one.
+CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
+                           const PrandtlIshlinskiiCreep::State& state,
+                           const std::optional<Shaping>& shaping, bool has_inverse,
+                           const CWriter& writer, const CExportOptions& options) {
   const auto& p = model.params();
   const auto reset = model.initial_state();
+  const ShapingText text = shaping_text(shaping, writer);
   CModelCode code;
-  code.title = fmt::format("Prandtl-Ishlinskii model with creep (pi_creep), {} plays, {} lags",
-                           model.size(), model.lags());
-  code.description =
-      " *     y = y_off + sum_j p_j w_j + sum_ij c_ij z_ij,   z_ij = a_i z_ij + (1 - a_i) w_j\n"
-      " * (include/hyst/models/prandtl_ishlinskii_creep.hpp), at the fitted sample time. Inverse,\n"
-      " * when the instantaneous weights form an invertible PI: the creep memory subtracted, then\n"
-      " * the analytic inverse PI (include/hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp).\n";
-  const PrandtlIshlinskii instantaneous({p.thresholds, model.instantaneous_weights(), 0.0});
-  code.has_inverse = instantaneous.is_invertible();
+  code.has_inverse = has_inverse;
   const std::size_t creep_size = std::max<std::size_t>(1, model.size() * model.lags());
-  code.header =
-      CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
-                                               {"L", std::to_string(model.lags())},
-                                               {"SIZE", std::to_string(creep_size)},
-                                               {"TS", fmt::format("{}", p.sample_time)}}) +
-      c_model_declarations("every play and lag at 0",
-                           "updates the plays and the lags and returns the output.");
+  code.header = CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
+                                                         {"L", std::to_string(model.lags())},
+                                                         {"SIZE", std::to_string(creep_size)},
+                                                         {"TS", fmt::format("{}", p.sample_time)},
+                                                         {"DEAD_ZONE_SIZE", text.size},
+                                                         {"SHAPE_FIELDS", text.fields}}) +
+                c_model_declarations("every play and lag at 0",
+                                     "updates the plays and the lags and returns the output.");
   std::vector<double> decay = model.decay();
   decay.resize(creep_size, 0.0);
+  std::string shaping_values;
+  if (shaping) {
+    shaping_values = CWriter::fill(",\n    %D%,\n    %G%,\n    %OFF%",
+                                   {{"D", writer.table(shaping->dead_zone.thresholds)},
+                                    {"G", writer.table(shaping->dead_zone.weights)},
+                                    {"OFF", writer.number(shaping->offset)}});
+  }
   code.source =
+      (shaping ? std::string(c_dead_zone_function()) : std::string()) +
       CWriter::fill(
           "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %A%,\n    %C%,\n"
-          "    %OFF%};\n\n",
+          "    %OFF%%SHAPING%};\n\n",
           {{"R", writer.table(p.thresholds)},
            {"P", writer.table(p.weights)},
            {"A", writer.table(decay)},
            {"C", writer.table(padded_for_c(p.creep_weights))},
-           {"OFF", writer.number(p.offset)}}) +
+           {"OFF", writer.number(p.offset)},
+           {"SHAPING", shaping_values}}) +
       "/* The state stored in the model file (INIT) and the default initial state (RESET). */\n" +
       creep_state_table(writer, "PLAY_INIT", "@_OPERATORS", state.play) +
       creep_state_table(writer, "CREEP_INIT", "@_CREEP_SIZE", state.creep) +
       creep_state_table(writer, "PLAY_RESET", "@_OPERATORS", reset.play) +
       creep_state_table(writer, "CREEP_RESET", "@_CREEP_SIZE", reset.creep) + "\n" +
-      with_lags(kCreepModelFunctions, "LAG_STEP", kLagStep, model.lags());
+      CWriter::fill(with_lags(kCreepModelFunctions, "LAG_STEP", kLagStep, model.lags()),
+                    {{"SHAPE", text.step}});
   if (!code.has_inverse) return code;
 
   const InversePrandtlIshlinskiiCreep inverse(model,
@@ -232,22 +281,74 @@ CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCr
   const auto& ip = inverse.instantaneous_inverse().inverse_operator().params();
   const auto init = inverse.state_consistent_with(state);
   const auto initial = inverse.initial_state();
-  code.header += std::string(kCreepInverseTypes) + c_inverse_declarations("");
+  std::string inverse_shaping_values;
+  if (shaping) {
+    inverse_shaping_values = CWriter::fill(",\n    %D%,\n    %G%,\n    %OFF%",
+                                           {{"D", writer.table(shaping->inverse.thresholds)},
+                                            {"G", writer.table(shaping->inverse.weights)},
+                                            {"OFF", writer.number(shaping->offset)}});
+  }
+  code.header +=
+      CWriter::fill(kCreepInverseTypes, {{"INVERSE_SHAPE_FIELDS", text.inverse_fields}}) +
+      c_inverse_declarations("");
   code.source +=
       "\n" +
       CWriter::fill(
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n    %W%,\n"
-          "    %MIN%, %MAX%};\n\n",
+          "    %MIN%, %MAX%%SHAPING%};\n\n",
           {{"R", writer.table(ip.thresholds)},
            {"P", writer.table(ip.weights)},
            {"W", writer.table(model.instantaneous_weights())},
            {"MIN", writer.number(options.limits.input_min)},
-           {"MAX", writer.number(options.limits.input_max)}}) +
+           {"MAX", writer.number(options.limits.input_max)},
+           {"SHAPING", inverse_shaping_values}}) +
       creep_state_table(writer, "PLAY_INVERSE_INIT", "@_OPERATORS", init.model.play) +
       creep_state_table(writer, "CREEP_INVERSE_INIT", "@_CREEP_SIZE", init.model.creep) +
       creep_state_table(writer, "INVERSE_PLAY_INIT", "@_OPERATORS", init.plays.play) +
       creep_state_table(writer, "INVERSE_PLAY_RESET", "@_OPERATORS", initial.plays.play) +
-      with_lags(kCreepInverseFunctions, "LAG_MEMORY", kLagMemory, model.lags());
+      CWriter::fill(with_lags(kCreepInverseFunctions, "LAG_MEMORY", kLagMemory, model.lags()),
+                    {{"TARGET", text.target}});
+  return code;
+}
+
+}  // namespace
+
+CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
+                  const CWriter& writer, const CExportOptions& options) {
+  const bool invertible =
+      PrandtlIshlinskii({model.params().thresholds, model.instantaneous_weights(), 0.0})
+          .is_invertible();
+  CModelCode code = emit_creep_code(model, state, std::nullopt, invertible, writer, options);
+  code.title = fmt::format("Prandtl-Ishlinskii model with creep (pi_creep), {} plays, {} lags",
+                           model.size(), model.lags());
+  code.description =
+      " *     y = y_off + sum_j p_j w_j + sum_ij c_ij z_ij,   z_ij = a_i z_ij + (1 - a_i) w_j\n"
+      " * (include/hyst/models/prandtl_ishlinskii_creep.hpp), at the fitted sample time. Inverse,\n"
+      " * when the instantaneous weights form an invertible PI: the creep memory subtracted, then\n"
+      " * the analytic inverse PI (include/hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp).\n";
+  return code;
+}
+
+CModelCode emit_c(const ModifiedPrandtlIshlinskiiCreep& model,
+                  const ModifiedPrandtlIshlinskiiCreep::State& state, const CWriter& writer,
+                  const CExportOptions& options) {
+  const auto& p = model.params();
+  const bool invertible = model.is_invertible();
+  Shaping shaping{p.dead_zone, {}, p.offset, p.output_min, p.output_max};
+  if (invertible) shaping.inverse = model.dead_zone().inverse().params();
+  CModelCode code =
+      emit_creep_code(model.hysteresis_creep(), state, shaping, invertible, writer, options);
+  code.title = fmt::format(
+      "modified Prandtl-Ishlinskii model with creep (modified_pi_creep), {} plays, {} lags, {} "
+      "dead zones",
+      model.hysteresis_creep().size(), model.hysteresis_creep().lags(), model.dead_zone().size());
+  code.description =
+      " *     y = y_off + S(q + sum_j p_j w_j + sum_ij c_ij z_ij),   S(x) = sum_i g_i S_{d_i}(x)\n"
+      " * (include/hyst/models/modified_prandtl_ishlinskii_creep.hpp), at the fitted sample time;\n"
+      " * params.offset is q, params.output_offset y_off. Inverse, when both parts are "
+      "invertible:\n"
+      " * S^-1 on the target, then the inverse of the PI with creep\n"
+      " * (include/hyst/inverse/inverse_modified_prandtl_ishlinskii_creep.hpp).\n";
   return code;
 }
 

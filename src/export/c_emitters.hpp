@@ -8,6 +8,7 @@
 #include "hyst/models/bouc_wen.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
+#include "hyst/models/modified_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/preisach.hpp"
@@ -18,6 +19,9 @@ CModelCode emit_c(const PrandtlIshlinskii& model, const PrandtlIshlinskii::State
                   const CWriter& writer, const CExportOptions& options);
 CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
                   const CWriter& writer, const CExportOptions& options);
+CModelCode emit_c(const ModifiedPrandtlIshlinskiiCreep& model,
+                  const ModifiedPrandtlIshlinskiiCreep::State& state, const CWriter& writer,
+                  const CExportOptions& options);
 CModelCode emit_c(const ModifiedPrandtlIshlinskii& model,
                   const ModifiedPrandtlIshlinskii::State& state, const CWriter& writer,
                   const CExportOptions& options);

@@ -234,4 +234,40 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   return files;
 }
 
+std::string_view c_dead_zone_function() {
+  return R"(/* S(x) = sum_i g_i S_{d_i}(x), S_d(x) = max(x - d, 0) for d > 0, x for d = 0, min(x - d, 0)
+   for d < 0 (the library's DeadZoneSuperposition, i in order). */
+static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_real x) {
+  @_real y = #(0.0);
+  unsigned int i;
+  for (i = 0; i < @_DEAD_ZONES; ++i) {
+    const @_real d = thresholds[i];
+    @_real zone = x;
+    if (d > #(0.0)) {
+      zone = x - d < #(0.0) ? #(0.0) : x - d;
+    } else if (d < #(0.0)) {
+      zone = #(0.0) < x - d ? #(0.0) : x - d;
+    }
+    y += weights[i] * zone;
+  }
+  return y;
+}
+
+)";
+  ;
+}
+
+std::string c_output_limits(const CWriter& writer, double output_min, double output_max) {
+  std::string text;
+  if (std::isfinite(output_min)) {
+    text +=
+        CWriter::fill("  if (output < %L%) output = %L%;\n", {{"L", writer.number(output_min)}});
+  }
+  if (std::isfinite(output_max)) {
+    text +=
+        CWriter::fill("  if (output > %U%) output = %U%;\n", {{"U", writer.number(output_max)}});
+  }
+  return text;
+}
+
 }  // namespace hyst::detail

@@ -53,6 +53,12 @@ class CWriter {
 //! n operators, the input clamp of the inverses); included once in a source file.
 std::string_view c_play_functions();
 
+//! The C template of the dead-zone superposition S(x) = sum_i g_i S_{d_i}(x) over @_DEAD_ZONES
+//! zones, as the library's DeadZoneSuperposition; included once in a source file.
+std::string_view c_dead_zone_function();
+//! C statements that clamp `output` to [output_min, output_max]; none for an infinite limit.
+std::string c_output_limits(const CWriter& writer, double output_min, double output_max);
+
 //! The declarations every model shares, after its @_params and @_state types: the fitted
 //! parameters, init (the model file's state), reset (`reset_note`: the default initial state) and
 //! step (`step_note`: what one sample does).

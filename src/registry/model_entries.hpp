@@ -15,6 +15,7 @@ ModelEntry maxwell_slip_entry();
 ModelEntry modified_prandtl_ishlinskii_entry();
 ModelEntry rate_dependent_prandtl_ishlinskii_entry();
 ModelEntry prandtl_ishlinskii_creep_entry();
+ModelEntry modified_prandtl_ishlinskii_creep_entry();
 ModelEntry butterfly_strain_entry();
 ModelEntry bouc_wen_entry();
 ModelEntry bouc_wen_oscillator_entry();

@@ -1,8 +1,6 @@
 // Registry entry of the modified Prandtl-Ishlinskii model: its model-file form, its analytic
 // inverse and its constrained least-squares fitter.
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "actuator_force_capability.hpp"
@@ -12,37 +10,15 @@
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
+#include "modified_pi_fields.hpp"
 #include "play_state_json.hpp"
 
 namespace hyst::detail {
 namespace {
 
-// A clamp limit of the output: infinite (no clamp) by default and then left out of the file, as
-// JSON has no infinity.
-void add_output_limit(FieldTable<ModifiedPrandtlIshlinskii::Params>& table, std::string_view name,
-                      double ModifiedPrandtlIshlinskii::Params::*member, std::string_view side) {
-  const std::string key(name);
-  table.add_custom(
-      {key,
-       "number",
-       "output units",
-       fmt::format("{} limit the output is clamped to (default: none; a fit sets the record's "
-                   "{})",
-                   side, side == "lower" ? "minimum" : "maximum"),
-       {}},
-      Presence::optional,
-      [key, member](JsonFields& fields, ModifiedPrandtlIshlinskii::Params& params) {
-        params.*member = fields.number(key);
-      },
-      [key, member](const ModifiedPrandtlIshlinskii::Params& params, nlohmann::json& json) {
-        if (std::isfinite(params.*member)) json[key] = params.*member;
-      });
-}
-
 struct ModifiedPiCodec : CodecOf<ModifiedPrandtlIshlinskii, "modified_pi"> {
   static FieldTable<P> parameters() {
     using Pi = PrandtlIshlinskii::Params;
-    using DeadZone = DeadZoneSuperposition::Params;
     // The file's fields are flat: the PI part's offset is "pi_offset", the dead zone's fields
     // have "dead_zone_" in front.
     const auto pi =
@@ -52,18 +28,8 @@ struct ModifiedPiCodec : CodecOf<ModifiedPrandtlIshlinskii, "modified_pi"> {
             .add("weights", &Pi::weights, "output / input units", "p_j, one per threshold")
             .add("pi_offset", &Pi::offset, "output units", "offset of the PI part",
                  Presence::optional);
-    const auto dead_zone = FieldTable<DeadZone>()
-                               .add("dead_zone_thresholds", &DeadZone::thresholds, "output units",
-                                    "d_i, increasing, one of them 0")
-                               .add("dead_zone_weights", &DeadZone::weights, "",
-                                    "g_i; invertible iff outward partial sums > 0");
-    auto table = FieldTable<P>()
-                     .add_all(&P::pi, pi)
-                     .add_all(&P::dead_zone, dead_zone)
-                     .add("offset", &P::offset, "output units", "y_off added after the dead zones",
-                          Presence::optional);
-    add_output_limit(table, "output_min", &P::output_min, "lower");
-    add_output_limit(table, "output_max", &P::output_max, "upper");
+    auto table = FieldTable<P>().add_all(&P::pi, pi);
+    add_output_shaping_fields(table);
     return table;
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -84,12 +50,7 @@ struct ModifiedPiCodec : CodecOf<ModifiedPrandtlIshlinskii, "modified_pi"> {
         model.is_invertible() ? "" : "not ");
     for (std::size_t j = 0; j < p.pi.thresholds.size(); ++j)
       text += fmt::format("{:4}  {:14.8g}  {:14.8g}\n", j, p.pi.thresholds[j], p.pi.weights[j]);
-    text += "   i   dead zone d_i      weight g_i\n";
-    for (std::size_t i = 0; i < p.dead_zone.thresholds.size(); ++i) {
-      text += fmt::format("{:4}  {:14.8g}  {:14.8g}\n", i, p.dead_zone.thresholds[i],
-                          p.dead_zone.weights[i]);
-    }
-    return text;
+    return text + describe_dead_zones(p.dead_zone);
   }
   static bool has_inverse(const Model& model) { return model.is_invertible(); }
   static std::unique_ptr<DynamicInverse> make_inverse(const Model& model, const Model::State& state,
@@ -102,15 +63,6 @@ struct ModifiedPiCodec : CodecOf<ModifiedPrandtlIshlinskii, "modified_pi"> {
   }
 };
 
-std::string modified_prandtl_ishlinskii_file_field(const std::string& field) {
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"pi.offset", "pi_offset"},
-                                 {"pi.", ""},
-                                 {"dead_zone.", "dead_zone_"}}) {
-    if (field.rfind(from, 0) == 0) return to + field.substr(from.size());
-  }
-  return field;
-}
-
 std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann::json& params_json,
                                                                  const nlohmann::json* state_json) {
   auto params = params_of_json<ModifiedPiCodec>(params_json, "params");
@@ -118,27 +70,16 @@ std::unique_ptr<DynamicModel> create_modified_prandtl_ishlinskii(const nlohmann:
   try {
     return make_dynamic_model<ModifiedPiCodec>(std::move(params), state_json);
   } catch (const Error& error) {
-    const std::string message = error.what();
-    if (message.rfind("params.", 0) != 0) throw;
-    throw Error("params." + modified_prandtl_ishlinskii_file_field(message.substr(7)));
+    throw with_file_field_names(
+        error, {{"pi.offset", "pi_offset"}, {"pi.", ""}, {"dead_zone.", "dead_zone_"}});
   }
 }
 
 FieldTable<ModifiedPiFitOptions> modified_prandtl_ishlinskii_fit_option_table() {
   using O = ModifiedPiFitOptions;
-  return add_play_weight_options(FieldTable<O>(Presence::optional))
-      .add("dead_zones", &O::dead_zones, "", "dead zones per side of the inverse map")
-      .add("dead_zone_thresholds", &O::dead_zone_thresholds, "output units",
-           "thresholds of the inverse dead-zone map around the offset, containing 0")
-      .add("output_offset", &O::output_offset, "output units",
-           "y_off (default: mid-range of the output)")
-      .add("min_weight", &O::min_weight, "", "relative lower bound of p_0 and of the map's slopes")
+  return add_dead_zone_fit_options(add_play_weight_options(FieldTable<O>(Presence::optional)))
       .add("initial_state", &O::initial_state, pi_initial_state_from_string,
-           "virgin (plays at 0) or periodic (one period run first)")
-      .add("clamp_output", &O::clamp_output, "",
-           "limit the output to the fitted record's output range; false = no limits")
-      .add("output_margin", &O::output_margin, "",
-           "widen those limits by this fraction of the output range on each side");
+           "virgin (plays at 0) or periodic (one period run first)");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "c_code_capability.hpp"
+#include "creep_fields.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii_creep.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/prandtl_ishlinskii_creep.hpp"
@@ -13,52 +14,23 @@
 namespace hyst::detail {
 namespace {
 
-nlohmann::json creep_state_to_json(const PrandtlIshlinskiiCreep::State& state) {
-  return {{"play", state.play}, {"creep", state.creep}};
-}
-
-nlohmann::json creep_inverse_state_to_json(const InversePrandtlIshlinskiiCreep::State& state) {
-  return creep_state_to_json(state.model);
-}
-
 struct PiCreepCodec : CodecOf<PrandtlIshlinskiiCreep, "pi_creep"> {
-  static FieldTable<P> parameters() {
-    return FieldTable<P>()
-        .add("thresholds", &P::thresholds, "input units", "play half-widths 0 = r_0 < r_1 < ...")
-        .add("weights", &P::weights, "output / input units", "p_j, one per threshold")
-        .add("time_constants", &P::time_constants, "s", "creep lags tau_i > 0, increasing")
-        .add("creep_weights", &P::creep_weights, "output / input units",
-             "c_ij >= 0, row-major: one row of one weight per threshold for each time constant")
-        .add("sample_time", &P::sample_time, "s", "Ts > 0 of the input samples")
-        .add("offset", &P::offset, "output units", "y_off", Presence::optional);
-  }
+  static FieldTable<P> parameters() { return pi_creep_fields("offset", "y_off"); }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return creep_state_to_json(state);
   }
   static Model::State state_from_json(const Model& model, JsonFields& fields) {
-    auto play = fields.numbers("play");
-    auto creep = fields.numbers("creep");
-    return state_at(fields, [&] { return model.make_state(std::move(play), std::move(creep)); });
+    return creep_state_from_json(model, fields);
   }
   static std::size_t parameter_count(const Model& model) {
     return model.size() * (1 + model.lags()) + 1;
   }
   static std::string describe(const Model& model) {
-    const auto& p = model.params();
-    std::string text = fmt::format(
-        "Prandtl-Ishlinskii model with creep: {} play operators, {} creep lags, sample time {} s, "
-        "offset {}\n   j   threshold r_j      weight p_j   creep weights c_ij (one per lag)\n",
-        model.size(), model.lags(), p.sample_time, p.offset);
-    for (std::size_t j = 0; j < model.size(); ++j) {
-      text += fmt::format("{:4}  {:14.8g}  {:14.8g}", j, p.thresholds[j], p.weights[j]);
-      for (std::size_t i = 0; i < model.lags(); ++i)
-        text += fmt::format("  {:12.6g}", p.creep_weights[i * model.size() + j]);
-      text += '\n';
-    }
-    text += "  time constants tau_i [s]:";
-    for (double tau : p.time_constants)
-      text += fmt::format(" {:.6g}", tau);
-    return text + '\n';
+    return fmt::format(
+               "Prandtl-Ishlinskii model with creep: {} play operators, {} creep lags, sample "
+               "time {} s, offset {}\n",
+               model.size(), model.lags(), model.params().sample_time, model.params().offset) +
+           describe_plays_and_lags(model);
   }
   static bool has_inverse(const Model& model) {
     return PrandtlIshlinskii({model.params().thresholds, model.instantaneous_weights(), 0.0})
@@ -76,13 +48,7 @@ struct PiCreepCodec : CodecOf<PrandtlIshlinskiiCreep, "pi_creep"> {
 
 FieldTable<PiCreepFitOptions> prandtl_ishlinskii_creep_fit_option_table() {
   using O = PiCreepFitOptions;
-  return add_play_weight_options(FieldTable<O>(Presence::optional))
-      .add("lags", &O::lags, "", "number of creep lags when time_constants are not given")
-      .add("time_constants", &O::time_constants, "s",
-           "fixed creep time constants (default: log-spaced from 10 Ts to the record's length)")
-      .add("sample_time", &O::sample_time, "s", "Ts of the record")
-      .add("initial_state", &O::initial_state, pi_initial_state_from_string,
-           "virgin (plays and lags at 0) or periodic (the record is one period in steady state)");
+  return add_creep_fit_options(add_play_weight_options(FieldTable<O>(Presence::optional)));
 }
 
 PiCreepFit fit_one_record(std::span<const double> input, std::span<const double> output,

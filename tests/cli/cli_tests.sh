@@ -846,6 +846,22 @@ assert ts['column'] == 'Time' and abs(ts['seconds'] - 0.025) < 1e-9, ts
 assert abs(m['params']['sample_time'] - 0.025) < 1e-9, m['params']['sample_time']
 assert len(m['params']['time_constants']) == 3, m['params']['time_constants']
 " || fail "pi_creep sample time from the Time column"
+  # The modified PI with creep the same way, then exported to C that compiles.
+  expect_ok "$HYST" fit modified_pi_creep --data "$AIX" --table 1 --input V+ --output P1 \
+    --option initial_state=periodic --option lags=3 --out modified.json
+  python3 -c "
+import json
+m = json.load(open('modified.json'))
+assert m['model'] == 'modified_pi_creep', m['model']
+assert abs(m['params']['sample_time'] - 0.025) < 1e-9, m['params']['sample_time']
+assert len(m['params']['dead_zone_thresholds']) == 7, m['params']['dead_zone_thresholds']
+assert m['info']['fit']['nrmse_percent'] < 6, m['info']['fit']
+" || fail "modified_pi_creep fit from the aixACCT table"
+  mkdir c
+  expect_ok "$HYST" export --model modified.json --lang c --out c --prefix creep
+  expect_stdout "the modified_pi_creep model and its inverse"
+  gcc -std=c99 -Wall -Wextra -Werror -pedantic -c -o c/creep.o c/creep.c 2>gcc.txt ||
+    fail "gcc: $(cat gcc.txt)"
   # A model without a sample time takes none, and --time says which models have one.
   expect_ok "$HYST" fit pi --data "$AIX" --table 1 --input V+ --output P1 --out pi.json
   python3 -c "

@@ -300,6 +300,17 @@ TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiAndItsInverse) {
   check_everything({limited, -2.0, 2.0}, kFloatBound);
 }
 
+TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiWithCreepAndItsInverse) {
+  check_everything({example_document("modified_pi_creep"), -2.0, 2.0}, kFloatBound);
+  // Output limits that act, and input limits on the inverse.
+  auto limited = example_document("modified_pi_creep");
+  limited["params"]["output_min"] = -0.4;
+  limited["params"]["output_max"] = 0.5;
+  limited["params"]["pi_offset"] = 0.05;
+  limited["params"]["offset"] = 0.1;
+  check_everything({limited, -2.0, 2.0}, kFloatBound, {-0.8, 0.9});
+}
+
 TEST_F(ExportCTest, GeneralizedPrandtlIshlinskiiAndItsInverseForEveryEnvelope) {
   auto tanh = example_document("gpi");
   check_everything({tanh, -2.5, 2.5}, kFloatBound);

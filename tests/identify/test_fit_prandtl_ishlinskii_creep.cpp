@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "../support/test_signals.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii_creep.hpp"
@@ -19,15 +20,8 @@ namespace {
 
 constexpr double kTs = 0.01;
 
-// Two periods of a 0 -> 1 -> -1 -> 0 triangle at `frequency`.
 std::vector<double> triangle(double frequency) {
-  const auto samples = static_cast<std::size_t>(2.0 / (frequency * kTs));
-  std::vector<double> v(samples);
-  for (std::size_t k = 0; k < samples; ++k) {
-    const double phase = std::fmod(static_cast<double>(k + 1) * kTs * frequency, 1.0);
-    v[k] = phase < 0.25 ? 4 * phase : phase < 0.75 ? 2 - 4 * phase : 4 * phase - 4;
-  }
-  return v;
+  return test::triangle_periods(frequency, kTs);
 }
 
 PrandtlIshlinskiiCreep truth() {

@@ -44,4 +44,16 @@ inline std::vector<double> pi_check_signal() {
   return v;
 }
 
+// Two periods of a 0 -> 1 -> -1 -> 0 triangle at `frequency` [Hz], sampled every `sample_time`
+// [s] from the first sample after 0.
+inline std::vector<double> triangle_periods(double frequency, double sample_time) {
+  const auto samples = static_cast<std::size_t>(2.0 / (frequency * sample_time));
+  std::vector<double> v(samples);
+  for (std::size_t k = 0; k < samples; ++k) {
+    const double phase = std::fmod(static_cast<double>(k + 1) * sample_time * frequency, 1.0);
+    v[k] = phase < 0.25 ? 4 * phase : phase < 0.75 ? 2 - 4 * phase : 4 * phase - 4;
+  }
+  return v;
+}
+
 }  // namespace hyst::test

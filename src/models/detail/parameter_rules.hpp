@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -48,6 +49,24 @@ struct ParameterRules {
     at_least(value, 0.0, "tolerance", "tolerance");
     if (value != 0.0 && (value < 1e-14 || value > 1.0)) {
       fail("tolerance", "tolerance", value, "must be 0 (fixed RK4 sub-steps) or in [1e-14, 1]");
+    }
+  }
+  //! A part of a composite model built from its parameters; its error is prefixed with the part's
+  //! name: "modified PI pi: ...", field "pi.weights[0]".
+  template <class Part>
+  Part part(typename Part::Params params, std::string_view prefix) const {
+    try {
+      return Part(std::move(params));
+    } catch (const Error& error) {
+      throw Error(fmt::format("{} {}: {}", model, prefix, error.what()),
+                  fmt::format("{}.{}", prefix, error.field()));
+    }
+  }
+  //! Output limits low < high (either may be infinite: no limit on that side).
+  void output_limits(double low, double high) const {
+    if (!(low < high)) {
+      throw Error(fmt::format("{} output_min = {} must be < output_max = {}", model, low, high),
+                  "output_min");
     }
   }
 };

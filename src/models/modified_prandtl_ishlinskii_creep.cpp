@@ -1,0 +1,33 @@
+#include "hyst/models/modified_prandtl_ishlinskii_creep.hpp"
+
+#include <utility>
+
+#include "detail/parameter_rules.hpp"
+
+namespace hyst {
+
+ModifiedPrandtlIshlinskiiCreep::ModifiedPrandtlIshlinskiiCreep(Params params)
+    : params_(std::move(params)),
+      core_(detail::ParameterRules{"modified PI with creep"}.part<PrandtlIshlinskiiCreep>(
+          params_.pi_creep, "pi_creep")),
+      dead_zone_(detail::ParameterRules{"modified PI with creep"}.part<DeadZoneSuperposition>(
+          params_.dead_zone, "dead_zone")) {
+  const detail::ParameterRules rules{"modified PI with creep"};
+  rules.finite(params_.offset, "offset", "offset");
+  rules.output_limits(params_.output_min, params_.output_max);
+}
+
+bool ModifiedPrandtlIshlinskiiCreep::is_invertible() const {
+  const PrandtlIshlinskii instantaneous(
+      {core_.params().thresholds, core_.instantaneous_weights(), 0.0});
+  return instantaneous.is_invertible() && dead_zone_.is_invertible();
+}
+
+ModifiedPrandtlIshlinskiiCreep ModifiedPrandtlIshlinskiiCreep::at_sample_time(
+    double sample_time) const {
+  auto params = params_;
+  params.pi_creep.sample_time = sample_time;
+  return ModifiedPrandtlIshlinskiiCreep(std::move(params));
+}
+
+}  // namespace hyst
