@@ -103,6 +103,8 @@ void bind_registry(py::module_& module) {
       .def_readonly("parameters", &ModelEntry::parameters)
       .def_readonly("fit_options", &ModelEntry::fit_options)
       .def_property_readonly("can_fit", &ModelEntry::can_fit, "True when hyst.fit() can fit it.")
+      .def_property_readonly("can_fit_records", &ModelEntry::can_fit_records,
+                             "True when hyst.fit_records() can fit several records together.")
       .def_property_readonly(
           "example_params", [](const ModelEntry& e) { return json_to_python(e.example_params); },
           "A small valid parameter set, as a dict.")
@@ -385,6 +387,37 @@ void bind_registry(py::module_& module) {
       "detrend also removes the drift of validation_input/validation_output (drift is a "
       "measurement artefact); cycles and resampling are fit-only. FitReport.preprocessing "
       "lists the steps applied.");
+  module.def(
+      "fit_records",
+      [](const std::string& name, const py::sequence& records,
+         const std::optional<std::vector<double>>& sample_times, const py::kwargs& options) {
+        const auto& entry = registry().find(name);
+        if (!entry.can_fit_records()) {
+          std::string names;
+          for (const auto& other : registry().entries()) {
+            if (other.can_fit_records()) names += (names.empty() ? "" : ", ") + other.name;
+          }
+          throw Error(fmt::format("model '{}' has no fit of several records (models with one: {})",
+                                  name, names));
+        }
+        const auto options_json = python_to_json(options, "");
+        const auto owned = curves_from_python(records, "records");
+        const auto views = fit_records_of(owned);
+        const std::vector<double> times = sample_times.value_or(std::vector<double>{});
+        std::optional<FitOutcome> outcome;
+        {
+          py::gil_scoped_release release;
+          outcome.emplace(entry.fit_records(views, times, options_json));
+        }
+        return py::make_tuple(std::move(outcome->model), std::move(outcome->report));
+      },
+      "name"_a, "records"_a, "sample_times"_a = py::none(),
+      "Fits one registered model to several records together, a sequence of (input, output) "
+      "pairs (e.g. one actuator driven at several rates): returns (Model, FitReport), the report "
+      "over every record. sample_times: one per record [s] for the models with a sample time "
+      "(each record is then discretised at its own; the model at the first's), or None for the "
+      "option sample_time on every record. Keyword options are the model's fit options. Models "
+      "with this fit: ModelEntry.can_fit_records.");
 }
 
 }  // namespace hyst::python

@@ -207,3 +207,51 @@ def test_schema_defaults_and_every_gpi_fit_option_from_python():
                              function_tolerance=1e-6, upper={"tau": 0.5})
     # Default screening alone runs 15 iterations from each of the data-derived starts.
     assert model.name == "gpi" and report.iterations <= 20
+
+
+def _triangle(frequency: float, sample_time: float) -> np.ndarray:
+    """Two periods of a 0 -> 1 -> -1 -> 0 triangle."""
+    t = np.arange(1, int(round(2 / (frequency * sample_time))) + 1) * sample_time
+    return 2 / np.pi * np.arcsin(np.sin(2 * np.pi * frequency * t))
+
+
+@pytest.mark.parametrize("name", ["pi_creep", "modified_pi_creep"])
+def test_fit_records_at_their_own_sample_times(name):
+    """One creep model from two rates, each record at its own sample time: the weights of the
+    model that made them come back (the same structure given)."""
+    params = {"thresholds": [0.0, 0.3], "weights": [1.0, 0.5], "time_constants": [0.1, 1.0],
+              "creep_weights": [0.05, 0.02, 0.05, 0.03], "sample_time": 1e-3}
+    if name == "modified_pi_creep":
+        params.update(pi_offset=0.0, dead_zone_thresholds=[-0.8, 0.0, 0.8],
+                      dead_zone_weights=[-0.4, 1.0, -0.4], offset=0.0)
+    else:
+        params["offset"] = 0.0
+    records, times = [], [1e-3, 1e-2]
+    for frequency, ts in zip([1.0, 0.1], times):
+        moved = hyst.Model(name, dict(params, sample_time=ts))
+        v = _triangle(frequency, ts)
+        records.append((v, moved.simulate(v)))
+    options = {"thresholds": [0.0, 0.3], "time_constants": [0.1, 1.0]}
+    if name == "modified_pi_creep":
+        # The inverse map's thresholds, S(d_i): the structure that reproduces the data exactly.
+        options.update(dead_zone_thresholds=[-0.8, 0.0, 0.8], output_offset=0.0,
+                       clamp_output=False)
+    model, report = hyst.fit_records(name, records, sample_times=times, **options)
+    assert report.model == name and report.fit.samples == sum(len(v) for v, _ in records)
+    assert report.fit.nrmse_percent < 1e-4
+    assert model.params["sample_time"] == pytest.approx(1e-3)
+    np.testing.assert_allclose(model.params["creep_weights"], params["creep_weights"], atol=1e-6)
+    np.testing.assert_allclose(model.params["weights"], params["weights"], atol=1e-6)
+
+
+def test_fit_records_refuses_what_it_cannot_do():
+    v = _triangle(1.0, 1e-2)
+    with pytest.raises(hyst.Error, match="model 'pi' has no fit of several records "
+                                         "\\(models with one: pi_creep, modified_pi_creep"):
+        hyst.fit_records("pi", [(v, v)])
+    with pytest.raises(hyst.Error, match="model 'butterfly_strain' has no sample time"):
+        hyst.fit_records("butterfly_strain", [(v, v), (v, 2 * v)], sample_times=[1e-2, 1e-2])
+    with pytest.raises(hyst.Error, match="2 sample times for 1 records"):
+        hyst.fit_records("pi_creep", [(v, v)], sample_times=[1e-2, 1e-2])
+    assert hyst.model_entry("pi_creep").can_fit_records
+    assert not hyst.model_entry("pi").can_fit_records

@@ -101,6 +101,11 @@ std::unique_ptr<DynamicModel> butterfly_dynamic_model(ButterflyFit fit) {
                                                         std::move(fit.initial_state));
 }
 
+ButterflyFit fit_butterfly_records(std::span<const FitRecord> records,
+                                   const ButterflyFitOptions& options) {
+  return fit_butterfly_strain(records, options);
+}
+
 }  // namespace
 
 ModelEntry butterfly_strain_entry() {
@@ -108,6 +113,7 @@ ModelEntry butterfly_strain_entry() {
       "butterfly strain: Preisach polarisation P(v) and a static map y = y_off + d v + sum q_n "
       "P^n (electrostriction); latent-P fit by Levenberg-Marquardt; inverse on monotone branches");
   set_fitter<ButterflyCodec>(entry, butterfly_fit_option_table(), &fit_butterfly_record);
+  set_records_fitter<ButterflyCodec>(entry, butterfly_fit_option_table(), &fit_butterfly_records);
   // P switches between -1 and +1 at +-2/3 (three levels); y = P + 0.3 P^2 has no vertex in
   // [-1, 1], so this example inverts over its whole range (q_2 > q_1 / 2 draws a butterfly).
   entry.example_params = {{"levels", 3},

@@ -241,6 +241,31 @@ void set_fitter(ModelEntry& entry, FieldTable<Options> table, Fit fit) {
   };
 }
 
+// Gives `entry` a fitter of several records, `fit(records, options)`, whose options `table` reads;
+// the sample times go to the option sample_times where the options have one.
+template <class Codec, class Options, class Fit>
+void set_records_fitter(ModelEntry& entry, FieldTable<Options> table, Fit fit) {
+  entry.fit_records = [table = std::make_shared<const FieldTable<Options>>(std::move(table)), fit](
+                          std::span<const FitRecord> records, std::span<const double> sample_times,
+                          const nlohmann::json& json) -> FitOutcome {
+    auto options = table->read(json, "fit options");
+    if (!sample_times.empty()) {
+      if constexpr (requires { options.sample_times; }) {
+        options.sample_times.assign(sample_times.begin(), sample_times.end());
+      } else {
+        throw Error(fmt::format("model '{}' has no sample time: fit its records without sample "
+                                "times",
+                                Codec::name),
+                    "sample_times");
+      }
+    }
+    auto result = fit(records, options);
+    return {std::make_unique<ModelAdapter<Codec>>(std::move(result.model),
+                                                  std::move(result.initial_state)),
+            std::move(result.report)};
+  };
+}
+
 // A state built by `make` (the model's validating make_state), with the state object's path in
 // front of a validation error: "state: Ikuta state fraction = 2 must be in [0, 1]".
 template <class Make>

@@ -6,7 +6,6 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -38,24 +37,26 @@ inline std::string describe_dead_zones(const DeadZoneSuperposition::Params& p) {
 // "output_min" and "output_max": infinite (no clamp) by default and then left out of the file, as
 // JSON has no infinity.
 template <class P>
+void add_output_limit(FieldTable<P>& table, const std::string& key, double P::*member,
+                      std::string_view side) {
+  table.add_custom(
+      {key,
+       "number",
+       "output units",
+       fmt::format("{} limit the output is clamped to (default: none; a fit sets the record's {})",
+                   side, side == "lower" ? "minimum" : "maximum"),
+       {}},
+      Presence::optional,
+      [key, member](JsonFields& fields, P& params) { params.*member = fields.number(key); },
+      [key, member](const P& params, nlohmann::json& json) {
+        if (std::isfinite(params.*member)) json[key] = params.*member;
+      });
+}
+
+template <class P>
 void add_output_limits(FieldTable<P>& table) {
-  for (const auto& [key, member, side] :
-       {std::tuple{std::string("output_min"), &P::output_min, std::string("lower")},
-        std::tuple{std::string("output_max"), &P::output_max, std::string("upper")}}) {
-    table.add_custom(
-        {key,
-         "number",
-         "output units",
-         fmt::format("{} limit the output is clamped to (default: none; a fit sets the record's "
-                     "{})",
-                     side, side == "lower" ? "minimum" : "maximum"),
-         {}},
-        Presence::optional,
-        [key, member](JsonFields& fields, P& params) { params.*member = fields.number(key); },
-        [key, member](const P& params, nlohmann::json& json) {
-          if (std::isfinite(params.*member)) json[key] = params.*member;
-        });
-  }
+  add_output_limit(table, "output_min", &P::output_min, "lower");
+  add_output_limit(table, "output_max", &P::output_max, "upper");
 }
 
 // The fit options of the dead-zone map and the output limits.

@@ -74,9 +74,15 @@ FieldTable<ModifiedPiCreepFitOptions> modified_prandtl_ishlinskii_creep_fit_opti
            "iterations of the output-error stage after the NNLS (0: the NNLS alone)");
 }
 
-ModifiedPiCreepFit fit_one_record(std::span<const double> input, std::span<const double> output,
-                                  const ModifiedPiCreepFitOptions& options) {
+ModifiedPiCreepFit fit_modified_pi_creep_record(std::span<const double> input,
+                                                std::span<const double> output,
+                                                const ModifiedPiCreepFitOptions& options) {
   return fit_modified_prandtl_ishlinskii_creep(input, output, options);
+}
+
+ModifiedPiCreepFit fit_modified_pi_creep_records(std::span<const FitRecord> records,
+                                                 const ModifiedPiCreepFitOptions& options) {
+  return fit_modified_prandtl_ishlinskii_creep(records, options);
 }
 
 }  // namespace
@@ -90,7 +96,9 @@ ModelEntry modified_prandtl_ishlinskii_creep_entry() {
   entry.parameters = parameter_table<ModifiedPiCreepCodec>().schema();
   entry.create = &create_modified_prandtl_ishlinskii_creep;
   set_fitter<ModifiedPiCreepCodec>(entry, modified_prandtl_ishlinskii_creep_fit_option_table(),
-                                   &fit_one_record);
+                                   &fit_modified_pi_creep_record);
+  set_records_fitter<ModifiedPiCreepCodec>(
+      entry, modified_prandtl_ishlinskii_creep_fit_option_table(), &fit_modified_pi_creep_records);
   entry.c_code = c_code_of<ModifiedPiCreepCodec>();
   entry.example_params = {{"thresholds", {0.0, 0.3, 0.7}},
                           {"weights", {0.8, 0.5, 0.3}},

@@ -51,9 +51,14 @@ FieldTable<PiCreepFitOptions> prandtl_ishlinskii_creep_fit_option_table() {
   return add_creep_fit_options(add_play_weight_options(FieldTable<O>(Presence::optional)));
 }
 
-PiCreepFit fit_one_record(std::span<const double> input, std::span<const double> output,
-                          const PiCreepFitOptions& options) {
+PiCreepFit fit_pi_creep_record(std::span<const double> input, std::span<const double> output,
+                               const PiCreepFitOptions& options) {
   return fit_prandtl_ishlinskii_creep(input, output, options);
+}
+
+PiCreepFit fit_pi_creep_records(std::span<const FitRecord> records,
+                                const PiCreepFitOptions& options) {
+  return fit_prandtl_ishlinskii_creep(records, options);
 }
 
 }  // namespace
@@ -62,7 +67,10 @@ ModelEntry prandtl_ishlinskii_creep_entry() {
   auto entry = entry_of<PiCreepCodec>(
       "PI with Kuhnen creep: plays driving first-order lags (exactly discretised), hysteresis and "
       "creep weights by one NNLS; exact inverse");
-  set_fitter<PiCreepCodec>(entry, prandtl_ishlinskii_creep_fit_option_table(), &fit_one_record);
+  set_fitter<PiCreepCodec>(entry, prandtl_ishlinskii_creep_fit_option_table(),
+                           &fit_pi_creep_record);
+  set_records_fitter<PiCreepCodec>(entry, prandtl_ishlinskii_creep_fit_option_table(),
+                                   &fit_pi_creep_records);
   entry.c_code = c_code_of<PiCreepCodec>();
   entry.example_params = {{"thresholds", {0.0, 0.25, 0.5}},
                           {"weights", {1.0, 0.5, 0.25}},

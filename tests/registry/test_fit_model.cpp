@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../data_processing/synthetic_records.hpp"
+#include "../support/expect_error.hpp"
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst {
@@ -82,6 +83,29 @@ TEST(FitModel, HeldOutFractionIsPreparedWithTheRecord) {
                 "fit and held-out validation part: linear drift removed", 0),
             0U)
       << outcome.report.preprocessing[0];
+}
+
+// Several records through the registry: y = 2 v at two sample times is fitted by the PI with
+// creep exactly (creep weights 0), its sample times reach the fit, and a model without a sample
+// time or without such a fit says so.
+TEST(FitRecords, CreepModelAtEachRecordsSampleTime) {
+  const Records data;
+  const std::vector<FitRecord> records{{data.input, data.output}, {data.input, data.output}};
+  const std::vector<double> sample_times{0.01, 0.1};
+  const auto& entry = ModelRegistry::builtin().find("pi_creep");
+  ASSERT_TRUE(entry.can_fit_records());
+  const auto outcome = entry.fit_records(records, sample_times, {{"operators", 2}, {"lags", 2}});
+  EXPECT_EQ(outcome.report.model, "pi_creep");
+  EXPECT_EQ(outcome.report.fit.samples, 2 * data.input.size());
+  EXPECT_LT(outcome.report.fit.nrmse_percent, 1e-6);
+  EXPECT_DOUBLE_EQ(outcome.model->params().at("sample_time").get<double>(), 0.01);
+  // Time constants from 10 Ts (the shortest) to the longest record's duration.
+  EXPECT_DOUBLE_EQ(outcome.model->params().at("time_constants")[0].get<double>(), 0.1);
+
+  EXPECT_FALSE(ModelRegistry::builtin().find("pi").can_fit_records());
+  const auto& butterfly = ModelRegistry::builtin().find("butterfly_strain");
+  EXPECT_HYST_ERROR(butterfly.fit_records(records, sample_times, nlohmann::json::object()),
+                    "model 'butterfly_strain' has no sample time");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hyst/data/preprocessing.hpp"
+#include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/validation_rule.hpp"
@@ -83,6 +84,14 @@ struct ModelEntry {
       create;
   //! Empty when the model has no fitter.
   std::function<FitOutcome(const FitRequest&)> fit;
+  //! A fitter of several records together, one model for all (one actuator at several rates or
+  //! amplitudes): `sample_times` has one per record, or is empty for the option sample_time on
+  //! every record; a model without a sample time refuses them. Records as measured (no
+  //! preprocessing, no held-out part: fit_model() is the one-record route for those). Empty when
+  //! the model has no such fitter.
+  std::function<FitOutcome(std::span<const FitRecord> records, std::span<const double> sample_times,
+                           const nlohmann::json& options)>
+      fit_records;
   //! The C code of a model made by `create` or `fit` (and of its inverse), in its current state,
   //! for options whose prefix is checked (generate_c() in export_c.hpp calls it); empty when the
   //! model has no C export.
@@ -100,6 +109,7 @@ struct ModelEntry {
   double example_inverse_tolerance = 1e-6;
 
   bool can_fit() const { return static_cast<bool>(fit); }
+  bool can_fit_records() const { return static_cast<bool>(fit_records); }
   bool can_export_c() const { return static_cast<bool>(c_code); }
 };
 
