@@ -857,6 +857,24 @@ assert abs(m['params']['sample_time'] - 0.025) < 1e-9, m['params']['sample_time'
 assert len(m['params']['dead_zone_thresholds']) == 7, m['params']['dead_zone_thresholds']
 assert m['info']['fit']['nrmse_percent'] < 6, m['info']['fit']
 " || fail "modified_pi_creep fit from the aixACCT table"
+  # Two rates together (--tables), each at the sample time of its own 'Time' column.
+  expect_ok "$HYST" fit modified_pi_creep --data "$AIX" --tables 6,1 --input V+ --output P1 \
+    --option initial_state=periodic --out rates.json
+  python3 -c "
+import json
+m = json.load(open('rates.json'))
+tables = m['info']['data']['tables']
+assert [t['table'] for t in tables] == [6, 1], tables
+assert abs(tables[0]['sample_time'] - 0.0025) < 1e-12 and abs(tables[1]['sample_time'] - 0.025) < 1e-12, tables
+assert m['info']['fit']['samples'] == 802 and m['info']['fit']['nrmse_percent'] < 4, m['info']['fit']
+assert abs(m['params']['sample_time'] - 0.0025) < 1e-12, m['params']['sample_time']
+" || fail "modified_pi_creep fitted on tables 6 and 1"
+  expect_error 1 "--tables: model 'pi' has no fit of several records (models with one: pi_creep" -- \
+    "$HYST" fit pi --data "$AIX" --tables 6,1 --input V+ --output P1 --out x.json
+  expect_error 1 "--tables '6,x': expected table numbers" -- \
+    "$HYST" fit pi_creep --data "$AIX" --tables 6,x --input V+ --output P1 --out x.json
+  expect_error 1 "--tables fits the tables as measured" -- \
+    "$HYST" fit pi_creep --data "$AIX" --tables 6,1 --detrend --input V+ --output P1 --out x.json
   mkdir c
   expect_ok "$HYST" export --model modified.json --lang c --out c --prefix creep
   expect_stdout "the modified_pi_creep model and its inverse"

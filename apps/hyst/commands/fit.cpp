@@ -2,6 +2,7 @@
 // with the fit report in its "info" object.
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -51,7 +52,8 @@ struct FitOptions {
   std::string forc;  //!< --forc FILE: the FORC route (fit_forc.hpp)
   std::string drift = "none";
   std::size_t hold_out_every = 0;
-  std::string time;  //!< --time COLUMN: the record's sample time from its time column
+  std::string time;    //!< --time COLUMN: the record's sample time from its time column
+  std::string tables;  //!< --tables 6,1: several tables of an aixACCT export fitted together
 };
 
 //! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
@@ -172,6 +174,102 @@ std::string models_that_can_fit(const ModelRegistry& registry) {
   return list.empty() ? "none" : list;
 }
 
+//! "6,1" as table numbers.
+std::vector<std::size_t> table_list(const std::string& text) {
+  std::vector<std::size_t> tables;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const auto comma = std::min(text.find(',', begin), text.size());
+    const auto item = text.substr(begin, comma - begin);
+    std::size_t used = 0;
+    unsigned long value = 0;
+    try {
+      value = std::stoul(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size() || !std::isdigit(static_cast<unsigned char>(item[0]))) {
+      throw Error(
+          fmt::format("--tables '{}': expected table numbers separated by commas, e.g. 6,1", text));
+    }
+    tables.push_back(value);
+    begin = comma + 1;
+  }
+  return tables;
+}
+
+//! --tables: one model fitted to several tables of an aixACCT export together, each at the
+//! sample time of its 'Time' column when the model has one (ModelEntry::fit_records).
+void run_tables_fit(const FitOptions& options, const ModelEntry& entry) {
+  if (options.table || options.validate_fraction || !options.validation_data.empty() ||
+      !options.cycles.empty() || options.detrend || !options.resample.empty() ||
+      options.band != 0.0 || !options.time.empty()) {
+    throw Error(
+        "--tables fits the tables as measured, from their own 'Time' columns: it takes no "
+        "--table, --validate-fraction, --validation-data, --cycles, --detrend, --resample, --band "
+        "or --time (compare a held-out table with 'hyst compare')");
+  }
+  if (!entry.can_fit_records()) {
+    std::string names;
+    for (const auto& other : ModelRegistry::builtin().entries()) {
+      if (other.can_fit_records()) names += (names.empty() ? "" : ", ") + other.name;
+    }
+    throw Error(
+        fmt::format("--tables: model '{}' has no fit of several records (models with one: {})",
+                    entry.name, names));
+  }
+  const auto tables = table_list(options.tables);
+  auto fit_json = fit_options(options);
+  std::vector<io::NamedPath> outputs{{options.out, "--out"}};
+  if (!options.report.empty()) outputs.push_back({options.report, "--report"});
+  io::check_outputs({{options.data, "--data"}}, outputs);
+
+  const bool timed = has_fit_option(entry, "sample_time");
+  if (timed && fit_json.contains("sample_time")) {
+    throw Error(
+        "--tables takes each table's sample time from its 'Time' column: give no "
+        "--option sample_time");
+  }
+  std::vector<ColumnPair> columns;
+  std::vector<double> sample_times;
+  nlohmann::json table_info = nlohmann::json::array();
+  for (const auto table : tables) {
+    const DataSource data(options.data, table);
+    columns.push_back(
+        read_column_pair(data, options.input, options.output, fmt::format("table {}", table)));
+    nlohmann::json info = {{"table", table}, {"samples", columns.back().input.size()}};
+    if (timed) {
+      sample_times.push_back(data::uniform_sample_time(
+          data.column("Time"), fmt::format("{}: table {} column 'Time'", options.data, table)));
+      info["sample_time"] = sample_times.back();
+    }
+    table_info.push_back(std::move(info));
+  }
+  std::vector<FitRecord> records;
+  for (const auto& pair : columns)
+    records.push_back({pair.input, pair.output});
+  auto outcome = [&] {
+    try {
+      return entry.fit_records(records, sample_times, fit_json);
+    } catch (const Error& error) {
+      throw Error(
+          fmt::format("fitting '{}' to {} tables {} (input '{}', output '{}'): {}", entry.name,
+                      options.data, options.tables, options.input, options.output, error.what()),
+          error.field());
+    }
+  }();
+  if (outcome.report.termination == Termination::failed) {
+    throw Error(fmt::format("fitting '{}' to {} tables {} failed: {}", entry.name, options.data,
+                            options.tables, outcome.report.message));
+  }
+  const nlohmann::json data_info = {{"file", options.data},
+                                    {"input", options.input},
+                                    {"output", options.output},
+                                    {"tables", std::move(table_info)}};
+  write_fitted_model(*outcome.model, fit_info_json(outcome.report, data_info, fit_json),
+                     outcome.report, options.out, options.report);
+}
+
 void run(const FitOptions& options) {
   if (!options.forc.empty()) {
     if (options.table || !options.cycles.empty() || options.detrend || !options.resample.empty() ||
@@ -191,6 +289,10 @@ void run(const FitOptions& options) {
   }
   const auto& registry = ModelRegistry::builtin();
   const auto& entry = registry.find(options.model);
+  if (!options.tables.empty()) {
+    run_tables_fit(options, entry);
+    return;
+  }
   if (!entry.can_fit()) {
     throw Error(fmt::format("model '{}' cannot be fitted (models that can: {})", entry.name,
                             models_that_can_fit(registry)));
@@ -337,6 +439,11 @@ void add_fit_command(CLI::App& app) {
                       "Also write the full fit report (text; '-': standard output)");
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
+  command->add_option("--tables", options->tables,
+                      "Several measurement tables N,M,... of an aixACCT export, fitted together "
+                      "as one model (one actuator at several rates), each at the sample time of "
+                      "its 'Time' column; for the models with a fit of several records "
+                      "(pi_creep, modified_pi_creep, butterfly_strain)");
   command->add_option("--time", options->time,
                       "Time column of --data [s]: its uniform step is the fit option sample_time "
                       "of a model that has one (an aixACCT export's 'Time' column is used by "
@@ -388,6 +495,8 @@ void add_fit_command(CLI::App& app) {
       --detrend --resample input-grid:20 --out pzt.json
   hyst fit pi_creep --data RMN_TRAP_SLOW.dat --table 1 --input V+ --output P1 \
       --option initial_state=periodic --out creep.json   # sample time from 'Time'
+  hyst fit modified_pi_creep --data RMN_TRAP_SLOW.dat --tables 6,1 --input V+ --output P1 \
+      --option initial_state=periodic --out creep.json   # 1 Hz and 0.1 Hz together
   hyst fit preisach --forc conventional_example.forc --drift multiplicative \
       --hold-out-every 4 --option intervals=32 --out forc.json --report forc.txt
 Preprocessing: --detrend, then --cycles, then --resample on --data. A --validation-data
