@@ -276,6 +276,12 @@ void bind_inverse(py::module_& m) {
       .def_readonly("not_invertible_samples", &InverseReport::not_invertible_samples,
                     "Samples with status not_invertible (counted in saturated_samples too).")
       .def_readonly("first_not_invertible", &InverseReport::first_not_invertible)
+      .def_readonly("limited_samples", &InverseReport::limited_samples,
+                    "Samples with status below_range or above_range (counted in saturated_samples "
+                    "too).")
+      .def_readonly("first_limited", &InverseReport::first_limited,
+                    "Index of the first sample limited to the input range (below_range or "
+                    "above_range; meaningful when limited_samples > 0).")
       .def_property_readonly("ok", &InverseReport::ok, "True when no sample was saturated.")
       .def("__repr__", [](const InverseReport& r) {
         return r.ok() ? std::string("InverseReport(ok)")

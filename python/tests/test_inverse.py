@@ -118,3 +118,14 @@ def test_subnormal_weight_refused_by_the_inverse_as_written():
     with pytest.raises(hyst.Error, match=r"PI weight p\[0\] = 1e-320 is too small") as caught:
         hyst.InversePrandtlIshlinskii(model)
     assert "inf" not in str(caught.value)
+
+
+def test_report_names_the_first_limited_sample():
+    """A target out of reach after one in reach: first_limited points at it."""
+    model = hyst.Model("pi", {"thresholds": [0.0, 0.3], "weights": [1.0, 0.5], "offset": 0.0})
+    inputs, report = model.inverse(input_min=-1.0, input_max=1.0).invert(
+        np.array([0.2, 0.4, 5.0, 0.1]))
+    assert report.saturated_samples == 1 and report.limited_samples == 1
+    assert report.not_invertible_samples == 0
+    assert report.first_limited == 2 and report.first_saturated == 2
+    assert inputs[2] == 1.0

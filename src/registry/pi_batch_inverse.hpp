@@ -143,7 +143,7 @@ inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
       status = InverseStatus::above_range;
     }
     inputs[k] = answer;
-    if (status != InverseStatus::ok && report.saturated_samples++ == 0) report.first_saturated = k;
+    report.record(k, status);
   }
   // Write the segments back into the play vector.
   for (std::size_t i = 0; i < stack.size(); ++i) {

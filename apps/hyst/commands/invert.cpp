@@ -80,13 +80,13 @@ void run(const InvertOptions& options) {
              "wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
              column, options.input_column);
   if (!report.ok()) {
-    const std::size_t limited = report.saturated_samples - report.not_invertible_samples;
+    const std::size_t limited = report.limited_samples;
     std::string message;
     if (limited > 0) {
       message = fmt::format(
           "{} of {} samples saturated: out of reach within the input limits [{}, {}] and the "
           "model's reach (first at sample {}); their inputs are the nearest reachable ones",
-          limited, table.rows(), options.input_min, options.input_max, report.first_saturated);
+          limited, table.rows(), options.input_min, options.input_max, report.first_limited);
     }
     if (report.not_invertible_samples > 0) {
       message += fmt::format(

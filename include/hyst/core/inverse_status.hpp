@@ -41,7 +41,19 @@ struct InverseReport {
   std::size_t first_saturated = 0;         //!< index of the first such sample (if any)
   std::size_t not_invertible_samples = 0;  //!< of those, samples with status not_invertible
   std::size_t first_not_invertible = 0;    //!< index of the first such sample (if any)
+  std::size_t limited_samples = 0;         //!< of those, below_range or above_range samples
+  std::size_t first_limited = 0;           //!< index of the first such sample (if any)
   bool ok() const { return saturated_samples == 0; }
+  //! Counts sample k of status `status`.
+  void record(std::size_t k, InverseStatus status) {
+    if (status == InverseStatus::ok) return;
+    if (saturated_samples++ == 0) first_saturated = k;
+    if (status == InverseStatus::not_invertible) {
+      if (not_invertible_samples++ == 0) first_not_invertible = k;
+    } else if (limited_samples++ == 0) {
+      first_limited = k;
+    }
+  }
 };
 
 }  // namespace hyst

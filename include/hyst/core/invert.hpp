@@ -28,12 +28,7 @@ InverseReport invert(const Inverse& inverse, typename Inverse::State& state,
   for (std::size_t k = 0; k < targets.size(); ++k) {
     const InverseSample sample = inverse.solve(state, targets[k]);
     inputs[k] = sample.input;
-    if (sample.status != InverseStatus::ok && report.saturated_samples++ == 0) {
-      report.first_saturated = k;
-    }
-    if (sample.status == InverseStatus::not_invertible && report.not_invertible_samples++ == 0) {
-      report.first_not_invertible = k;
-    }
+    report.record(k, sample.status);
   }
   return report;
 }
