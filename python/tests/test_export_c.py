@@ -62,5 +62,8 @@ def test_float_export_and_bad_inputs(tmp_path):
     with pytest.raises(hyst.Error, match="'kp' is not supported"):
         kp = hyst.Model("kp", {"levels": 4, "lower": 0, "upper": 1, "weights": [1.0] * 10})
         hyst.export_c(kp, tmp_path)
-    with pytest.raises(hyst.Error, match="does not exist"):
-        hyst.export_c(model, tmp_path / "missing")
+    (tmp_path / "plain").write_text("x")
+    with pytest.raises(hyst.Error, match="'.*plain' is not a folder"):
+        hyst.export_c(model, tmp_path / "plain" / "ctrl")
+    hyst.export_c(model, tmp_path / "new" / "ctrl", prefix="g")  # a missing folder is created
+    assert (tmp_path / "new" / "ctrl" / "g.h").is_file()

@@ -117,11 +117,14 @@ def test_extract_refuses_its_input_as_output(tmp_path):
     assert path.read_bytes() == before
 
 
-def test_refuses_a_folder_and_a_missing_folder(tmp_path):
+def test_refuses_a_folder_and_a_file_as_folder_and_creates_a_missing_folder(tmp_path):
     with pytest.raises(hyst.Error, match="it is a folder, not a file"):
         hyst.io.write_csv(tmp_path, {"v": [1.0]})
-    with pytest.raises(hyst.Error, match="the folder '.*missing' does not exist"):
-        hyst.save_model(tmp_path / "missing" / "m.json", example_model())
+    (tmp_path / "plain").write_text("x")
+    with pytest.raises(hyst.Error, match="'.*plain' is not a folder"):
+        hyst.save_model(tmp_path / "plain" / "m.json", example_model())
+    hyst.save_model(tmp_path / "new" / "sub" / "m.json", example_model())
+    assert (tmp_path / "new" / "sub" / "m.json").is_file()
 
 
 @needs_gnuplot

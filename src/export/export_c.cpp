@@ -7,6 +7,7 @@
 
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/output_paths.hpp"
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst {
@@ -49,11 +50,10 @@ CCode generate_c(const DynamicModel& model, const CExportOptions& options) {
 }
 
 void write_c(const CCode& code, const std::filesystem::path& folder) {
-  std::error_code error;
-  if (!std::filesystem::is_directory(folder, error)) {
-    throw Error(fmt::format("C export: the output folder '{}' does not exist or is not a folder",
-                            folder.string()),
-                "out");
+  try {
+    io::create_output_folder(folder);
+  } catch (const Error& error) {
+    throw Error(fmt::format("C export: {}", error.what()), "out");
   }
   const io::FileContent files[] = {{folder / code.header_name, code.header},
                                    {folder / code.source_name, code.source}};

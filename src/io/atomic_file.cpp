@@ -120,6 +120,7 @@ class StagedOutput {
       through_content_ = content;
       return;
     }
+    create_output_folder(resolved_.path.parent_path());
     const fs::path temporary = temporary_path_for(resolved_.path);
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) {

@@ -20,6 +20,19 @@ namespace fs = std::filesystem;
 // The limit of the Linux kernel for one path (MAXSYMLINKS).
 constexpr int kMaxLinks = 40;
 
+fs::path folder_of(const fs::path& path) {
+  return path.parent_path().empty() ? fs::path(".") : path.parent_path();
+}
+
+//! `folder` or the nearest of its parents that exists (followed through links).
+fs::path first_existing(fs::path folder) {
+  std::error_code error;
+  while (!fs::exists(fs::status(folder, error)) && folder_of(folder) != folder) {
+    folder = folder_of(folder);
+  }
+  return folder;
+}
+
 //! Resolves `path`; on failure returns why (a message without the path) and leaves `target`.
 std::string resolve(const fs::path& path, OutputTarget& target) {
   if (path.filename().empty() || path.filename() == "." || path.filename() == "..") {
@@ -30,14 +43,10 @@ std::string resolve(const fs::path& path, OutputTarget& target) {
     struct stat status {};
     if (::lstat(current.c_str(), &status) != 0) {
       if (errno != ENOENT && errno != ENOTDIR) return errno_message(errno);
-      const fs::path folder = current.parent_path().empty() ? fs::path(".") : current.parent_path();
-      std::error_code error;
-      const auto folder_status = fs::status(folder, error);
-      if (!fs::exists(folder_status)) {
-        return fmt::format("the folder '{}' does not exist", folder.string());
-      }
-      if (!fs::is_directory(folder_status)) {
-        return fmt::format("'{}' is not a folder", folder.string());
+      // A missing folder is created when the output is written (create_output_folder()).
+      if (const auto blocker = first_existing(folder_of(current));
+          !fs::is_directory(fs::status(blocker))) {
+        return fmt::format("'{}' is not a folder", blocker.string());
       }
       target = {current, OutputKind::file};
       return {};
@@ -68,12 +77,19 @@ std::string resolve(const fs::path& path, OutputTarget& target) {
 //! inode) of its folder and its name, so that "a/../x" and "x" compare equal before they exist.
 using Identity = std::tuple<dev_t, ino_t, std::string>;
 
+//! In a folder still to be created, (device, inode) of its first existing parent and the rest
+//! of the path.
 std::optional<Identity> identity_of(const fs::path& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) == 0) return Identity{status.st_dev, status.st_ino, ""};
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  if (::stat(folder.c_str(), &status) != 0) return std::nullopt;
-  return Identity{status.st_dev, status.st_ino, path.filename().string()};
+  fs::path rest = path.filename();
+  fs::path folder = folder_of(path);
+  while (::stat(folder.c_str(), &status) != 0) {
+    if (folder_of(folder) == folder) return std::nullopt;
+    rest = folder.filename() / rest;
+    folder = folder_of(folder);
+  }
+  return Identity{status.st_dev, status.st_ino, rest.lexically_normal().string()};
 }
 
 std::string named(const NamedPath& path) {
@@ -88,6 +104,20 @@ OutputTarget resolve_output(const fs::path& path) {
     throw Error(fmt::format("cannot write '{}': {}", path.string(), why));
   }
   return target;
+}
+
+void create_output_folder(const fs::path& folder) {
+  if (folder.empty()) return;
+  const auto blocker = first_existing(folder);
+  if (!fs::is_directory(fs::status(blocker))) {
+    throw Error(fmt::format("cannot create the folder '{}': '{}' is not a folder", folder.string(),
+                            blocker.string()));
+  }
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error) {
+    throw Error(fmt::format("cannot create the folder '{}': {}", folder.string(), error.message()));
+  }
 }
 
 void check_outputs(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {

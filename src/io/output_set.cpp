@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/io/output_paths.hpp"
 
 namespace hyst::io {
 namespace {
@@ -89,10 +90,8 @@ void place_link(const fs::path& scratch, const std::string& text, const fs::path
 OutputSet::OutputSet(fs::path folder, const std::vector<std::string>& names)
     : folder_(std::move(folder)) {
   if (folder_.empty()) folder_ = ".";
+  create_output_folder(folder_);
   std::error_code error;
-  if (!fs::is_directory(folder_, error)) {
-    throw Error(fmt::format("'{}' is not an existing folder", folder_.string()));
-  }
   for (const auto& name : names)
     check_name(folder_, name);
 

@@ -250,23 +250,6 @@ fs::path temporary_path_for(const fs::path& path, Format format) {
                                           format == Format::svg ? "svg" : "png");
 }
 
-void check_folder(const fs::path& png) {
-  if (png.filename().empty() || png.filename() == "." || png.filename() == "..") {
-    throw Error(fmt::format("cannot write '{}': the path does not name a file", png.string()));
-  }
-  const fs::path folder = png.parent_path().empty() ? fs::path(".") : png.parent_path();
-  std::error_code error;
-  const auto status = fs::status(folder, error);
-  if (!fs::exists(status)) {
-    throw Error(fmt::format("cannot write '{}': the folder '{}' does not exist", png.string(),
-                            folder.string()));
-  }
-  if (!fs::is_directory(status)) {
-    throw Error(
-        fmt::format("cannot write '{}': '{}' is not a folder", png.string(), folder.string()));
-  }
-}
-
 }  // namespace
 
 std::string detail::gnuplot_string(std::string_view text) {
@@ -379,8 +362,8 @@ void render(const std::string& script, const fs::path& output, int stdout_fd,
 //! (hyst/io/output_paths.hpp).
 void detail::write_image(const std::function<std::string(const fs::path& output)>& script,
                          const fs::path& png, ImageFormat format) {
-  check_folder(png);
   const io::OutputTarget target = io::resolve_output(png);
+  if (target.kind == io::OutputKind::file) io::create_output_folder(target.path.parent_path());
 
   // The temporary image lies beside its target (in a staging folder when the target is one); for
   // a device or FIFO, whose folder may not take files (/dev), in the temporary folder.

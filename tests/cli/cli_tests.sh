@@ -297,8 +297,13 @@ case_compare() {
     "$HYST" compare --data data.csv --input v --output y --option pi.operators --out-dir cmp
   expect_error 1 "unknown model 'nope'" -- \
     "$HYST" compare --data data.csv --input v --output y --models pi,nope --out-dir cmp
-  expect_error 1 "--out-dir 'missing' is not an existing folder" -- \
-    "$HYST" compare --data data.csv --input v --output y --out-dir missing
+  # A missing --out-dir is created with its parents; a file in its way is named.
+  expect_ok "$HYST" compare --data short.csv --input v --output y --models pi --no-plots \
+    --out-dir new/cmp
+  [ -s new/cmp/ranking.md ] || fail "no ranking.md in the created --out-dir new/cmp"
+  printf 'x\n' >plain
+  expect_error 1 "--out-dir: cannot create the folder 'plain/cmp': 'plain' is not a folder" -- \
+    "$HYST" compare --data data.csv --input v --output y --out-dir plain/cmp
   expect_no_temporaries
 }
 
@@ -390,9 +395,10 @@ case_compare_html() {
   # Loops: measured, pi, bouc_wen; errors: pi, bouc_wen.
   [ "$(grep -o '<text>\(measured\|pi\|bouc_wen\)</text>' dom.html | wc -l)" -eq 5 ] ||
     fail "expected 5 curves with their legend entries in the rendered page"
-  expect_error 1 "--html 'missing/r.html': the folder 'missing' does not exist" -- \
+  printf 'x\n' >plain
+  expect_error 1 "--html 'plain/r.html': 'plain' is not a folder" -- \
     "$HYST" compare --data data.csv --input v --output y --models pi --out-dir cmp \
-    --html missing/r.html
+    --html plain/r.html
 }
 
 case_simulate_round_trip() {
@@ -588,8 +594,8 @@ case_plot() {
   expect_error 1 "no column 'q'" "columns: t, v, y" -- \
     "$HYST" plot --data data.csv --x t --y y,q --out l.png
   expect_error 2 "--kind" -- "$HYST" plot --data data.csv --x t --y y --kind pie --out l.png
-  expect_error 1 "--out" "nofolder/p.png" "does not exist" -- \
-    "$HYST" plot --data data.csv --x t --y y --out nofolder/p.png
+  expect_ok "$HYST" plot --data data.csv --x t --y y --out new/folder/p.png
+  [ -s new/folder/p.png ] || fail "no plot in the created folder new/folder"
   expect_no_temporaries
 }
 
@@ -732,8 +738,8 @@ case_unwritable_output() {
     "$HYST" invert --model known.json --target data.csv --column y --out file/v.csv
   expect_error 1 "file/p.png" "not a folder" -- \
     "$HYST" plot --data data.csv --x t --y y --out file/p.png
-  expect_error 1 "missing/o.csv" "does not exist" -- \
-    "$HYST" simulate --model known.json --input in.csv --out missing/o.csv
+  expect_error 1 "file/sub/o.csv" "'file' is not a folder" -- \
+    "$HYST" simulate --model known.json --input in.csv --out file/sub/o.csv
   [ ! -e m.json ] || fail "m.json was written although --report is unwritable"
   expect_no_temporaries
 }
@@ -816,10 +822,11 @@ case_actuator_bad_inputs() {
   awk 'BEGIN { print "t,reference"; print "0,1e-4"; print "0.001,1e-4" }' >coarse.csv
   expect_error 1 "coarse.csv" "column 't', data row 2" "sample time" -- \
     "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference coarse.csv --out o.csv
-  expect_error 1 "missing/o.csv" "does not exist" -- \
-    "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out missing/o.csv
-  expect_error 1 "--out-dir" "does not exist" -- \
-    "$HYST" actuator compare --config "$MSMA_CONFIG" --out-dir nowhere
+  printf 'x\n' >plain
+  expect_error 1 "plain/o.csv" "'plain' is not a folder" -- \
+    "$HYST" actuator simulate --config "$MSMA_CONFIG" --reference r.csv --out plain/o.csv
+  expect_error 1 "--out-dir: cannot create the folder 'plain/results': 'plain' is not a folder" -- \
+    "$HYST" actuator compare --config "$MSMA_CONFIG" --out-dir plain/results
 }
 
 # --- measured data files ----------------------------------------------------------------------
@@ -1231,7 +1238,9 @@ case_export_bad_inputs() {
   mkdir out
   expect_error 1 "--float and --double" -- "$HYST" export --model known.json --out out --float --double
   expect_error 1 "--lang 'rust'" -- "$HYST" export --model known.json --lang rust --out out
-  expect_error 1 "missing" "does not exist" -- "$HYST" export --model known.json --out missing
+  "$HYST" export --model known.json --out new/ctrl >/dev/null 2>&1 ||
+    fail "export into a missing folder failed"
+  [ -s new/ctrl/hyst_pi.h ] || fail "no header in the created folder new/ctrl: $(ls -R new)"
   printf 'x\n' >file
   expect_error 1 "'file'" "not a folder" -- "$HYST" export --model known.json --out file
   expect_error 1 "prefix '2x'" "C identifier" -- "$HYST" export --model known.json --out out --prefix 2x

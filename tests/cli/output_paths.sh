@@ -213,8 +213,11 @@ case_not_a_file() {
   expect_refused "--out 'sock': it is a socket" -- \
     "$HYST" simulate --model m.json --input in.csv --out sock
   [ -S sock ] || fail "the socket was replaced"
-  expect_refused "--out 'missing/o.csv': the folder 'missing' does not exist" -- \
-    "$HYST" simulate --model m.json --input in.csv --out missing/o.csv
+  printf 'x\n' >plain
+  expect_refused "--out 'plain/o.csv': 'plain' is not a folder" -- \
+    "$HYST" simulate --model m.json --input in.csv --out plain/o.csv
+  expect_ok "$HYST" simulate --model m.json --input in.csv --out new/sub/o.csv
+  [ -s new/sub/o.csv ] || fail "no output in the created folder new/sub"
 }
 
 case_stdout() {

@@ -402,12 +402,22 @@ TEST_F(ExportCTest, AdaptiveBoucWenIsRefused) {
   EXPECT_HYST_ERROR(generate_c(*model, {}), "tolerance = 0");
 }
 
-TEST_F(ExportCTest, BadPrefixAndMissingFolderAreNamed) {
+TEST_F(ExportCTest, BadPrefixAndAFileAsFolderAreNamed) {
   auto model = model_from_json(example_document("pi"), "test");
   CExportOptions options;
   options.prefix = "9lives";
   EXPECT_HYST_ERROR(generate_c(*model, options), "must be a C identifier");
-  EXPECT_HYST_ERROR(export_c(*model, dir_ / "missing", {}), "does not exist");
+  std::ofstream(dir_ / "file") << "x";
+  EXPECT_HYST_ERROR(export_c(*model, dir_ / "file" / "ctrl", {}),
+                    "C export: cannot create the folder '" + (dir_ / "file" / "ctrl").string() +
+                        "': '" + (dir_ / "file").string() + "' is not a folder");
+}
+
+TEST_F(ExportCTest, CreatesAMissingFolder) {
+  auto model = model_from_json(example_document("pi"), "test");
+  const auto code = export_c(*model, dir_ / "new" / "ctrl", {});
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir_ / "new" / "ctrl" / code.header_name));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir_ / "new" / "ctrl" / code.source_name));
 }
 
 }  // namespace

@@ -92,13 +92,11 @@ TEST_F(AtomicFileTest, RelativePathInTheCurrentFolder) {
   EXPECT_EQ(entries(), std::vector<std::string>{"relative.txt"});
 }
 
-TEST_F(AtomicFileTest, MissingFolderThrowsNamingThePath) {
-  const fs::path target = dir_ / "missing" / "out.csv";
-  EXPECT_HYST_ERROR(write_file_atomically(target, "x"),
-                    fmt::format("cannot write '{}': the folder '{}' does not exist",
-                                target.string(), (dir_ / "missing").string()));
-  EXPECT_FALSE(fs::exists(dir_ / "missing"));
-  EXPECT_TRUE(entries().empty());
+TEST_F(AtomicFileTest, MissingFoldersAreCreated) {
+  const fs::path target = dir_ / "new" / "sub" / "out.csv";
+  write_file_atomically(target, "x\n");
+  EXPECT_EQ(slurp(target), "x\n");
+  EXPECT_EQ(entries(), std::vector<std::string>{"new"});
 }
 
 TEST_F(AtomicFileTest, ParentThatIsARegularFileThrowsAndLeavesThatFileAlone) {
@@ -151,17 +149,18 @@ TEST_F(AtomicFileTest, FilesWrittenTogetherAreAllReplaced) {
   EXPECT_EQ(entries(), (std::vector<std::string>{"model.json", "report.md"}));
 }
 
-// The second file cannot be written (its folder is missing): the first, whose content was already
+// The second file cannot be written (its folder is a file): the first, whose content was already
 // staged, is left as it was, and no temporary file stays behind.
 TEST_F(AtomicFileTest, FilesWrittenTogetherAreAllKeptWhenOneFails) {
   put(dir_ / "model.json", "old model\n");
-  const fs::path report = dir_ / "missing" / "report.md";
+  put(dir_ / "notes", "a file\n");
+  const fs::path report = dir_ / "notes" / "report.md";
   const FileContent files[] = {{dir_ / "model.json", "new model\n"}, {report, "new report\n"}};
   EXPECT_HYST_ERROR(write_files_atomically(files),
-                    fmt::format("cannot write '{}': the folder '{}' does not exist",
-                                report.string(), (dir_ / "missing").string()));
+                    fmt::format("cannot write '{}': '{}' is not a folder", report.string(),
+                                (dir_ / "notes").string()));
   EXPECT_EQ(slurp(dir_ / "model.json"), "old model\n");
-  EXPECT_EQ(entries(), std::vector<std::string>{"model.json"});
+  EXPECT_EQ(entries(), (std::vector<std::string>{"model.json", "notes"}));
 }
 
 TEST_F(AtomicFileTest, ExistingFolderAsTargetThrowsAndIsKept) {

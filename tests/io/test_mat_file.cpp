@@ -279,10 +279,12 @@ TEST_F(MatFile, RejectsInvalidVariablesToWrite) {
       prefix + "variable 'y': y[1] = inf is not finite");
   EXPECT_FALSE(fs::exists(path)) << "nothing written on error";
 
-  const fs::path nowhere = file("no_such_folder") / "out.mat";
-  EXPECT_HYST_ERROR(write_mat_vectors(nowhere, {{"a", {1}}}),
-                    "cannot write '" + nowhere.string() + "': the folder '" +
-                        nowhere.parent_path().string() + "' does not exist");
+  const fs::path plain = file("plain.txt");
+  std::ofstream(plain) << "x";
+  EXPECT_HYST_ERROR(write_mat_vectors(plain / "out.mat", {{"a", {1}}}),
+                    "cannot write '" + (plain / "out.mat").string() + "': '" + plain.string() +
+                        "' is not a folder");
+  fs::remove(plain);
   EXPECT_HYST_ERROR(write_mat_vectors(folder_ / "..", {{"a", {1}}}),
                     "the path does not name a file");
   EXPECT_TRUE(folder_entries().empty());

@@ -105,7 +105,16 @@ TEST_F(OutputSetTest, RefusesANameThatIsAFolderOrALinkElsewhere) {
   put(dir_ / "elsewhere.txt", "x");
   fs::create_symlink("elsewhere.txt", dir_ / "a.txt");
   EXPECT_HYST_ERROR(OutputSet(dir_, {"a.txt"}), "it is a link elsewhere");
-  EXPECT_HYST_ERROR(OutputSet(dir_ / "missing", {"a.txt"}), "is not an existing folder");
+  EXPECT_HYST_ERROR(OutputSet(dir_ / "elsewhere.txt" / "sub", {"a.txt"}),
+                    "cannot create the folder '" + (dir_ / "elsewhere.txt" / "sub").string() +
+                        "': '" + (dir_ / "elsewhere.txt").string() + "' is not a folder");
+}
+
+TEST_F(OutputSetTest, CreatesAMissingFolder) {
+  OutputSet set(dir_ / "new" / "results", {"a.txt"});
+  put(set.staged("a.txt"), "first\n");
+  set.publish();
+  EXPECT_EQ(slurp(dir_ / "new" / "results" / "a.txt"), "first\n");
 }
 
 }  // namespace

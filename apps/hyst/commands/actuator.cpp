@@ -67,7 +67,7 @@ void compare(const ActuatorCompareOptions& options) {
   // The tables and plots in --out-dir are published as one set (hyst/io/output_set.hpp).
   std::optional<io::OutputSet> set;
   if (!options.out_dir.empty()) {
-    check_output_folder(folder / "comparison.md", "--out-dir");
+    create_output_folder(folder, "--out-dir");
     io::check_outputs({{options.config, "--config"}}, {{folder / "comparison.md", "--out-dir"},
                                                        {folder / "comparison.csv", "--out-dir"}});
     set.emplace(folder, std::vector<std::string>{"comparison.md", "comparison.csv"});

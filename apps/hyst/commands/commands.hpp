@@ -50,19 +50,13 @@ inline void warn(std::string_view message) {
   fmt::print(stderr, "hyst: warning: {}\n", one_line(message));
 }
 
-//! Fails early, before any long work, when an output file cannot be created because its folder
-//! is missing or is not a folder.
-inline void check_output_folder(const std::filesystem::path& path, std::string_view option) {
-  const auto folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-  std::error_code error;
-  const auto status = std::filesystem::status(folder, error);
-  if (!std::filesystem::exists(status)) {
-    throw Error(fmt::format("{} '{}': the folder '{}' does not exist", option, path.string(),
-                            folder.string()));
-  }
-  if (!std::filesystem::is_directory(status)) {
-    throw Error(
-        fmt::format("{} '{}': '{}' is not a folder", option, path.string(), folder.string()));
+//! Creates the output folder of `option` (e.g. --out-dir) and its parents when missing, before
+//! the outputs in it are checked.
+inline void create_output_folder(const std::filesystem::path& folder, std::string_view option) {
+  try {
+    io::create_output_folder(folder);
+  } catch (const Error& error) {
+    throw Error(fmt::format("{}: {}", option, error.what()));
   }
 }
 

@@ -118,9 +118,7 @@ void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions c
   compare.validation.start = validation_start_from_string(options.validation_start);
   compare.validation.align = validation_alignment_from_string(options.validation_align);
   const std::filesystem::path folder = options.out_dir;
-  if (!std::filesystem::is_directory(folder)) {
-    throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
-  }
+  create_output_folder(folder, "--out-dir");
   const std::vector<std::string> names{"ranking.md", "ranking.csv"};
   io::check_outputs({{options.data, "--data"}},
                     {{folder / names[0], "--out-dir"}, {folder / names[1], "--out-dir"}});
@@ -171,9 +169,7 @@ void run(const CompareCommandOptions& options) {
   compare.no_fit_percent = options.no_fit_percent;
   compare.fit_options = fit_options(options.option_pairs);
   const std::filesystem::path folder = options.out_dir;
-  if (!std::filesystem::is_directory(folder)) {
-    throw Error(fmt::format("--out-dir '{}' is not an existing folder", options.out_dir));
-  }
+  create_output_folder(folder, "--out-dir");
   // The files in --out-dir (and --html when it lies there too) are published as one set
   // (hyst/io/output_set.hpp): a reader never sees new rankings beside old plots.
   std::vector<std::string> names{"ranking.md", "ranking.csv"};

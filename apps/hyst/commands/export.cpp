@@ -49,10 +49,8 @@ void run(const ExportOptions& options) {
     // The file names depend on the prefix: known once the code is generated.
     code = generate_c(*model, export_options);
     const auto folder = std::filesystem::path(options.out);
-    if (std::filesystem::is_directory(folder)) {
-      io::check_outputs({{options.model, "--model"}}, {{folder / code.header_name, "--out"},
-                                                       {folder / code.source_name, "--out"}});
-    }
+    io::check_outputs({{options.model, "--model"}},
+                      {{folder / code.header_name, "--out"}, {folder / code.source_name, "--out"}});
     write_c(code, folder);
   } catch (const Error& error) {
     throw Error(fmt::format("{}: {}", options.model, error.what()));
@@ -71,7 +69,9 @@ void add_export_command(CLI::App& app) {
       "export", "Write a model (and its inverse) as dependency-free C99 code for a controller.");
   command->add_option("--model", options->model, "Model file (JSON)")->required();
   command->add_option("--lang", options->lang, "Target language (c)")->capture_default_str();
-  command->add_option("--out", options->out, "Existing output folder for <prefix>.h and .c")
+  command
+      ->add_option("--out", options->out,
+                   "Output folder for <prefix>.h and .c (created when missing)")
       ->required();
   command->add_option("--prefix", options->prefix,
                       "Prefix of the C names and files (default: hyst_<model>)");

@@ -42,8 +42,8 @@ namespace hyst {
 //! bad prefix (field "prefix").
 CCode generate_c(const DynamicModel& model, const CExportOptions& options);
 
-//! Writes the two files of `code` into `folder` (which must exist; hyst::Error naming it
-//! otherwise) together, as io::write_files_atomically() does. The header defines
+//! Writes the two files of `code` into `folder` (created when missing; hyst::Error naming it
+//! when it cannot be) together, as io::write_files_atomically() does. The header defines
 //! <PREFIX>_EXPORT_STAMP, a digest of both files' text, and the source refuses to compile
 //! (#error) with a header of another export, so that a mixed pair cannot be built silently.
 void write_c(const CCode& code, const std::filesystem::path& folder);

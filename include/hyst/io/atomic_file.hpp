@@ -22,10 +22,10 @@
 namespace hyst::io {
 
 //! Replaces (or creates) the file at `path` with `content`, atomically. An existing file keeps its
-//! permission bits. The folder must exist. A link is followed; a device or FIFO is written
-//! through; a folder or socket is refused. Throws hyst::Error naming the path and the reason,
-//! e.g. "cannot write 'out/fit.csv': No such file or directory (creating the temporary file
-//! 'out/.fit.csv.tmp.4711.0')".
+//! permission bits. A missing folder is created (with its parents). A link is followed; a device or
+//! FIFO is written through; a folder or socket is refused. Throws hyst::Error naming the path and
+//! the reason, e.g. "cannot write 'out/fit.csv': No such file or directory (creating the temporary
+//! file 'out/.fit.csv.tmp.4711.0')".
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 //! One file of a set written by write_files_atomically().

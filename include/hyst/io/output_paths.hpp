@@ -8,6 +8,7 @@
 //!  - a socket or a folder is refused;
 //!  - an output that is the same file as an input (same device and inode, also through links
 //!    and hard links), or two outputs that are the same file, are refused, naming both;
+//!  - a missing folder is created, with its missing parents, when the output is written;
 //!  - "-" stands for standard output (of the command line's text outputs) and never names a file.
 
 #include <filesystem>
@@ -27,10 +28,16 @@ struct OutputTarget {
   OutputKind kind = OutputKind::file;
 };
 
-//! Follows `path` through its symbolic links (at most 40) to what will be written. Throws
-//! hyst::Error "cannot write 'PATH': WHY" when the target is a folder or a socket, when the folder
-//! of a target that does not exist yet is missing, or on a link loop.
+//! Follows `path` through its symbolic links (at most 40) to what will be written. A target
+//! whose folder is missing is fine: the writer creates the folder (create_output_folder()).
+//! Throws hyst::Error "cannot write 'PATH': WHY" when the target is a folder or a socket, when
+//! the first existing parent of its folder is not a folder (a file), or on a link loop.
 OutputTarget resolve_output(const std::filesystem::path& path);
+
+//! Creates `folder` and its missing parents, as `mkdir -p` does; an existing folder is left as it
+//! is. Throws hyst::Error "cannot create the folder 'a/b/c': 'a/b' is not a folder" (or the
+//! system's reason, e.g. "Permission denied").
+void create_output_folder(const std::filesystem::path& folder);
 
 //! A path and how the user named it in messages, e.g. {"fit.json", "--out"}.
 struct NamedPath {

@@ -27,10 +27,10 @@ namespace hyst::io {
 
 class OutputSet {
  public:
-  //! Prepares publishing into the existing folder `folder`: checks that none of `names` (the
-  //! files the set will hold, as far as known) is something other than a file or a link of an
-  //! earlier set (a folder, a device, a link elsewhere), removes set folders of dead runs and
-  //! creates the staging folder. Throws hyst::Error naming the folder or the file.
+  //! Prepares publishing into `folder` (created when missing, with its parents): checks that none
+  //! of `names` (the files the set will hold, as far as known) is something other than a file or a
+  //! link of an earlier set (a folder, a device, a link elsewhere), removes set folders of dead
+  //! runs and creates the staging folder. Throws hyst::Error naming the folder or the file.
   OutputSet(std::filesystem::path folder, const std::vector<std::string>& names);
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
