@@ -1,0 +1,185 @@
+"""The PEP 517 build backend of the Python module `hyst`: `pip install .` and `pip wheel .`.
+
+It lives in the repository (pyproject.toml names it with `backend-path`) and needs nothing but
+the standard library, so that pip builds offline with no build requirements to fetch. It drives
+CMake: configures a Release build of the module alone in `build-wheel/` of the checkout (kept,
+so a second install only relinks), builds the target `hyst_python` for the interpreter running
+pip, and packs the module into a wheel by hand (a zip with the `.dist-info` files of the
+wheel format: METADATA, WHEEL, RECORD with sha256 digests). numpy, which the module needs, is
+not declared as a requirement: it comes from Debian (python3-numpy, seen by a venv made with
+--system-site-packages), and a declared one would make `pip wheel .` fetch it.
+
+Settings, as `pip install . --config-settings KEY=VALUE` or environment variables:
+  build-dir / HYST_WHEEL_BUILD_DIR   the CMake build folder (default: build-wheel)
+  jobs / HYST_WHEEL_JOBS             parallel build jobs (default: the number of CPUs)
+"""
+
+import base64
+import hashlib
+import io
+import os
+import re
+import subprocess
+import sys
+import sysconfig
+import tarfile
+import zipfile
+from pathlib import Path
+
+SOURCE = Path(__file__).resolve().parents[2]
+NAME = "hyst"
+
+
+def _version():
+    text = (SOURCE / "CMakeLists.txt").read_text()
+    match = re.search(r"project\(hyst VERSION ([0-9.]+)", text)
+    if not match:
+        raise RuntimeError("CMakeLists.txt: no 'project(hyst VERSION x.y.z' line")
+    return match.group(1)
+
+
+def _description():
+    text = (SOURCE / "CMakeLists.txt").read_text()
+    match = re.search(r'project\(hyst VERSION [0-9.]+ DESCRIPTION "([^"]*)"', text)
+    return match.group(1) if match else "Hysteresis models"
+
+
+def _setting(config_settings, key, variable, default):
+    if config_settings and key in config_settings:
+        return str(config_settings[key])
+    return os.environ.get(variable, default)
+
+
+def _tag():
+    """The wheel tag of the running interpreter, e.g. cp311-cp311-linux_x86_64."""
+    interpreter = f"cp{sys.version_info.major}{sys.version_info.minor}"
+    platform = sysconfig.get_platform().replace("-", "_").replace(".", "_")
+    return f"{interpreter}-{interpreter}-{platform}"
+
+
+def _metadata():
+    return "\n".join([
+        "Metadata-Version: 2.1",
+        f"Name: {NAME}",
+        f"Version: {_version()}",
+        f"Summary: {_description()}",
+        "Requires-Python: >=3.9",
+        "",
+        "The Python module of hyst, a C++20 toolkit for hysteresis models: fit, invert,",
+        "compensate, simulate and control. See README.md of the repository.",
+        "",
+    ])
+
+
+def _dist_info():
+    return f"{NAME}-{_version()}.dist-info"
+
+
+def _write_dist_info(folder):
+    info = Path(folder) / _dist_info()
+    info.mkdir(parents=True, exist_ok=True)
+    (info / "METADATA").write_text(_metadata())
+    return info.name
+
+
+def _build_module(config_settings):
+    """Configures and builds the module; returns the files that go into the wheel."""
+    build = Path(_setting(config_settings, "build-dir", "HYST_WHEEL_BUILD_DIR",
+                          str(SOURCE / "build-wheel")))
+    if not build.is_absolute():
+        build = SOURCE / build
+    jobs = _setting(config_settings, "jobs", "HYST_WHEEL_JOBS", str(os.cpu_count() or 1))
+    configure = [
+        "cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+        f"-DHYST_PYTHON_EXECUTABLE={sys.executable}", f"-DPython_EXECUTABLE={sys.executable}",
+        "-DHYST_BUILD_TESTS=OFF", "-DHYST_BUILD_BENCHMARKS=OFF", "-DHYST_BUILD_EXAMPLES=OFF",
+        "-DHYST_BUILD_PYTHON=ON",
+    ]
+    # A configured folder is built as it is (e.g. a developer's build/, whose module is built
+    # for /usr/bin/python3, the interpreter of a --system-site-packages venv too).
+    commands = [] if (build / "CMakeCache.txt").exists() else [configure]
+    commands.append(["cmake", "--build", str(build), "--target", "hyst_python", "-j", jobs])
+    # Progress to standard error: pip shows it with -v and keeps it out of its own output.
+    for command in commands:
+        result = subprocess.run(command, stdout=sys.stderr, stderr=sys.stderr, check=False)
+        if result.returncode != 0:
+            raise RuntimeError(f"hyst: '{' '.join(command)}' failed with exit status "
+                               f"{result.returncode} (the CMake output above says why)")
+    module_folder = build / "python"
+    files = sorted(module_folder.glob(f"{NAME}*{sysconfig.get_config_var('EXT_SUFFIX')}"))
+    if len(files) != 1:
+        raise RuntimeError(f"hyst: expected one built module in {module_folder}, found "
+                           f"{[f.name for f in files]}")
+    packed = {files[0].name: files[0].read_bytes()}
+    # Type stubs and their PEP 561 marker, when the build made them.
+    for stub in sorted(module_folder.glob("*.pyi")) + sorted(module_folder.glob("py.typed")):
+        packed[stub.name] = stub.read_bytes()
+    return packed
+
+
+def _record_line(name, content):
+    digest = base64.urlsafe_b64encode(hashlib.sha256(content).digest()).rstrip(b"=").decode()
+    return f"{name},sha256={digest},{len(content)}"
+
+
+def _write_wheel(wheel_directory, files):
+    dist_info = _dist_info()
+    files = dict(files)
+    files[f"{dist_info}/METADATA"] = _metadata().encode()
+    files[f"{dist_info}/WHEEL"] = "\n".join([
+        "Wheel-Version: 1.0", "Generator: hyst_build", "Root-Is-Purelib: false",
+        f"Tag: {_tag()}", ""]).encode()
+    files[f"{dist_info}/top_level.txt"] = f"{NAME}\n".encode()
+    record_name = f"{dist_info}/RECORD"
+    record = [_record_line(name, content) for name, content in files.items()]
+    record.append(f"{record_name},,")
+    files[record_name] = ("\n".join(record) + "\n").encode()
+
+    wheel_name = f"{NAME}-{_version()}-{_tag()}.whl"
+    target = Path(wheel_directory) / wheel_name
+    temporary = target.with_name(f".{wheel_name}.tmp.{os.getpid()}")
+    with zipfile.ZipFile(temporary, "w", compression=zipfile.ZIP_DEFLATED) as wheel:
+        for name, content in files.items():
+            info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
+            info.external_attr = (0o755 if name.endswith(".so") else 0o644) << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            wheel.writestr(info, content)
+    os.replace(temporary, target)
+    return wheel_name
+
+
+# The PEP 517 hooks.
+
+def get_requires_for_build_wheel(config_settings=None):
+    return []
+
+
+def get_requires_for_build_sdist(config_settings=None):
+    return []
+
+
+def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
+    return _write_dist_info(metadata_directory)
+
+
+def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
+    return _write_wheel(wheel_directory, _build_module(config_settings))
+
+
+def build_sdist(sdist_directory, config_settings=None):
+    """The tracked files of the checkout (git ls-files) with PKG-INFO, as NAME-VERSION.tar.gz."""
+    listed = subprocess.run(["git", "-C", str(SOURCE), "ls-files", "-z"], capture_output=True,
+                            check=True).stdout.decode().split("\0")
+    base = f"{NAME}-{_version()}"
+    name = f"{base}.tar.gz"
+    target = Path(sdist_directory) / name
+    temporary = target.with_name(f".{name}.tmp.{os.getpid()}")
+    with tarfile.open(temporary, "w:gz") as archive:
+        for path in filter(None, listed):
+            archive.add(SOURCE / path, arcname=f"{base}/{path}", recursive=False)
+        info = tarfile.TarInfo(f"{base}/PKG-INFO")
+        content = _metadata().encode()
+        info.size = len(content)
+        archive.addfile(info, io.BytesIO(content))
+    os.replace(temporary, target)
+    return name

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# `pip install .` and `pip wheel .` of the checkout, offline, in a fresh venv of Debian's Python
+# with its site packages (numpy from Debian), then an example run with the installed module from
+# another folder, without PYTHONPATH. The build backend is pointed at the configured build folder
+# of this test run (HYST_WHEEL_BUILD_DIR), so that it only checks that the module is up to date
+# instead of compiling the library a second time; everything else is what a user's install does.
+#
+# Usage: pip_install.sh CHECKOUT BUILD_DIR
+set -euo pipefail
+
+checkout=$(realpath "$1")
+build=$(realpath "$2")
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+export HYST_WHEEL_BUILD_DIR="$build" PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_NO_INPUT=1
+unset PYTHONPATH
+
+/usr/bin/python3 -m venv --system-site-packages "$scratch/venv"
+python="$scratch/venv/bin/python"
+
+"$python" -m pip wheel "$checkout" --wheel-dir "$scratch/wheels" >"$scratch/wheel.log" 2>&1 ||
+  { tail -n 30 "$scratch/wheel.log"; fail "pip wheel failed"; }
+wheel=$(ls "$scratch"/wheels/hyst-*.whl) || fail "no wheel in $(ls "$scratch/wheels")"
+"$python" - "$wheel" <<'PY' || fail "the wheel is malformed"
+import base64, hashlib, sys, zipfile
+wheel = zipfile.ZipFile(sys.argv[1])
+names = wheel.namelist()
+record = next(n for n in names if n.endswith(".dist-info/RECORD"))
+assert any(n.startswith("hyst.") and n.endswith(".so") for n in names), names
+for line in wheel.read(record).decode().splitlines():
+    name, digest, size = line.split(",")
+    if name == record:
+        continue
+    content = wheel.read(name)
+    expected = base64.urlsafe_b64encode(hashlib.sha256(content).digest()).rstrip(b"=").decode()
+    assert digest == f"sha256={expected}" and int(size) == len(content), name
+assert sorted(l.split(",")[0] for l in wheel.read(record).decode().splitlines()) == sorted(names)
+PY
+
+"$python" -m pip install "$checkout" >"$scratch/install.log" 2>&1 ||
+  { tail -n 30 "$scratch/install.log"; fail "pip install failed"; }
+cd "$scratch"
+location=$("$python" -c "import hyst; print(hyst.__file__)")
+case "$location" in
+  "$scratch/venv/"*) ;;
+  *) fail "hyst was imported from $location, not from the venv" ;;
+esac
+"$python" "$checkout/examples/02_fit_pi.py" >example.log 2>&1 ||
+  { cat example.log; fail "example 02 failed with the installed module"; }
+"$python" -m pip uninstall -y hyst >/dev/null || fail "pip uninstall failed"
+! "$python" -c "import hyst" 2>/dev/null || fail "hyst still importable after uninstall"
+echo "pip wheel, pip install, example 02 and pip uninstall in a venv: ok"
