@@ -105,16 +105,14 @@ def _build_module(config_settings):
         if result.returncode != 0:
             raise RuntimeError(f"hyst: '{' '.join(command)}' failed with exit status "
                                f"{result.returncode} (the CMake output above says why)")
-    module_folder = build / "python"
-    files = sorted(module_folder.glob(f"{NAME}*{sysconfig.get_config_var('EXT_SUFFIX')}"))
-    if len(files) != 1:
-        raise RuntimeError(f"hyst: expected one built module in {module_folder}, found "
-                           f"{[f.name for f in files]}")
-    packed = {files[0].name: files[0].read_bytes()}
-    # Type stubs and their PEP 561 marker, when the build made them.
-    for stub in sorted(module_folder.glob("*.pyi")) + sorted(module_folder.glob("py.typed")):
-        packed[stub.name] = stub.read_bytes()
-    return packed
+    package = build / "python" / NAME
+    extension = package / f"_core{sysconfig.get_config_var('EXT_SUFFIX')}"
+    if not extension.is_file():
+        raise RuntimeError(f"hyst: the build made no {extension}")
+    # The package as the build laid it out: the extension, the Python files, stubs if any.
+    return {f"{NAME}/{path.relative_to(package)}": path.read_bytes()
+            for path in sorted(package.rglob("*"))
+            if path.is_file() and "__pycache__" not in path.parts}
 
 
 def _record_line(name, content):

@@ -163,11 +163,18 @@ nlohmann::json json_at_depth(py::handle value, const std::string& path, std::siz
 
 }  // namespace hyst::python
 
-PYBIND11_MODULE(hyst, module) {
+// The extension hyst._core; the package hyst (python/hyst/__init__.py) re-exports it. Named
+// "hyst" before anything is bound, so that classes and submodules are hyst.Model, hyst.io, ...
+PYBIND11_MODULE(_core, module) {
   namespace py = pybind11;
+  module.attr("__name__") = "hyst";
   module.doc() =
-      "hyst: hysteresis models (relay, play, stop, Prandtl-Ishlinskii), their inverses, test "
-      "signals, CSV and MAT files, identification and the model registry.\n\n"
+      "The bindings of hyst: every registered model by name (hyst.models(), hyst.Model, "
+      "hyst.fit, hyst.fit_records, hyst.compare), the typed operators and models (play, stop, "
+      "relay, PI, GPI, Preisach, ...) with their inverses, the butterfly strain and FORC fits, "
+      "actuators in closed loop (hyst.ActuatorConfig), C export (hyst.export_c), test signals "
+      "(hyst.signals), data files (hyst.io: CSV, MAT, aixACCT, MicroMag, MagIC) and record "
+      "processing (hyst.data).\n\n"
       "Invalid input (parameters, files, NaN samples) raises hyst.Error; numpy float64 arrays "
       "are used in place, and returned arrays own their memory (no copies).\n\n"
       "State: models and inverses never change when they run. simulate() and invert() start "

@@ -1,0 +1,34 @@
+"""hyst: hysteresis models, their inverses, identification, actuators and control.
+
+The bindings of the C++ library live in the extension hyst._core and are re-exported here; this
+package adds what is Python's own: signatures that inspect.signature() and help() can read
+(hyst._signatures) and named fit results (hyst.FitResult). The bindings' own description, with
+the rules on state, arrays and errors, follows.
+"""
+
+from . import _core
+from ._core import *  # noqa: F401,F403  (every binding, documented in _core)
+from ._core import __version__, data, io, signals  # noqa: F401
+from ._results import FitResult
+from ._signatures import add_signatures as _add_signatures
+
+# The fits that return a model and its report answer with a FitResult (still a tuple).
+_FITS = ("fit", "fit_records", "fit_prandtl_ishlinskii", "fit_preisach_forcs",
+         "fit_butterfly_strain_records", "fit_butterfly_strain_with_polarisation")
+
+
+def _returning_fit_result(function):
+    def fit(*args, **kwargs):
+        return FitResult(function(*args, **kwargs))
+    fit.__name__ = fit.__qualname__ = function.__name__
+    fit.__doc__ = function.__doc__
+    fit.__module__ = __name__
+    return fit
+
+
+for _name in _FITS:
+    globals()[_name] = _returning_fit_result(getattr(_core, _name))
+
+_add_signatures(globals(), (io, data, signals))
+__doc__ = __doc__ + "\n" + (_core.__doc__ or "")
+del _name
