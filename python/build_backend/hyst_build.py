@@ -3,8 +3,8 @@
 It lives in the repository (pyproject.toml names it with `backend-path`) and needs nothing but
 the standard library, so that pip builds offline with no build requirements to fetch. It drives
 CMake: configures a Release build of the module alone in `build-wheel/` of the checkout (kept,
-so a second install only relinks), builds the target `hyst_python` for the interpreter running
-pip, and packs the module into a wheel by hand (a zip with the `.dist-info` files of the
+so a second install only relinks), builds the module and its type stubs (target `hyst_python_stubs`) for the interpreter
+running pip, and packs the module into a wheel by hand (a zip with the `.dist-info` files of the
 wheel format: METADATA, WHEEL, RECORD with sha256 digests). numpy, which the module needs, is
 not declared as a requirement: it comes from Debian (python3-numpy, seen by a venv made with
 --system-site-packages), and a declared one would make `pip wheel .` fetch it.
@@ -98,7 +98,7 @@ def _build_module(config_settings):
     # A configured folder is built as it is (e.g. a developer's build/, whose module is built
     # for /usr/bin/python3, the interpreter of a --system-site-packages venv too).
     commands = [] if (build / "CMakeCache.txt").exists() else [configure]
-    commands.append(["cmake", "--build", str(build), "--target", "hyst_python", "-j", jobs])
+    commands.append(["cmake", "--build", str(build), "--target", "hyst_python_stubs", "-j", jobs])
     # Progress to standard error: pip shows it with -v and keeps it out of its own output.
     for command in commands:
         result = subprocess.run(command, stdout=sys.stderr, stderr=sys.stderr, check=False)

@@ -30,6 +30,7 @@ names = wheel.namelist()
 record = next(n for n in names if n.endswith(".dist-info/RECORD"))
 assert any(n.startswith("hyst/_core.") and n.endswith(".so") for n in names), names
 assert "hyst/__init__.py" in names, names
+assert {"hyst/__init__.pyi", "hyst/io.pyi", "hyst/py.typed"} <= set(names), names
 for line in wheel.read(record).decode().splitlines():
     name, digest, size = line.split(",")
     if name == record:
