@@ -9,6 +9,7 @@ the rules on state, arrays and errors, follows.
 from . import _core
 from ._core import *  # noqa: F401,F403  (every binding, documented in _core)
 from ._core import __version__, data, io, signals  # noqa: F401
+from . import plot  # noqa: F401  (matplotlib is imported when a plot is drawn)
 from ._results import FitResult
 from ._signatures import add_signatures as _add_signatures
 

@@ -196,7 +196,7 @@ def render_module(parse, names, module, fits):
     out = [HEADER]
     name = module.__name__
     if name == "hyst":
-        out.append("from . import data as data, io as io, signals as signals")
+        out.append("from . import data as data, io as io, plot as plot, signals as signals")
         out.append("from ._results import FitResult as FitResult")
         out.append("from . import _core as _core")
         out.append("__version__: str")
