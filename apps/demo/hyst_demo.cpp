@@ -17,6 +17,7 @@
 
 #include "demo_sections.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "progress_display.hpp"
 
 namespace {
 
@@ -41,9 +42,18 @@ int run(const fs::path& data_dir, const fs::path& folder, std::string_view only)
   }
   fs::create_directories(folder);
   std::string markdown = "# hyst demo\n\n";
+  // Progress on standard error when it is a terminal (make demo run by hand).
+  hyst::cli::ProgressDisplay display("hyst_demo", hyst::cli::ProgressMode::automatic);
+  const auto progress = display.callback();
+  const auto total = only.empty() ? sections.size() : 1;
+  std::size_t done = 0;
   for (const auto& [name, section] : sections) {
-    if (only.empty() || name == only) markdown += section();
+    if (!only.empty() && name != only) continue;
+    if (progress) progress({"sections", done, total, name});
+    markdown += section();
+    ++done;
   }
+  if (progress) progress({"sections", done, total, {}});
   hyst::io::write_file_atomically(folder / "results.md", markdown);
   fmt::print("{}\nwrote {}\n", markdown, folder.string());
   return 0;

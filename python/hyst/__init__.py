@@ -10,6 +10,7 @@ from . import _core
 from ._core import *  # noqa: F401,F403  (every binding, documented in _core)
 from ._core import __version__, data, io, signals  # noqa: F401
 from . import plot  # noqa: F401  (matplotlib is imported when a plot is drawn)
+from ._progress import as_callback as _as_progress_callback
 from ._results import FitResult
 from ._signatures import add_signatures as _add_signatures
 
@@ -29,6 +30,13 @@ def _returning_fit_result(function):
 
 for _name in _FITS:
     globals()[_name] = _returning_fit_result(getattr(_core, _name))
+
+
+def compare(*args, progress=None, **kwargs):
+    return _core.compare(*args, progress=_as_progress_callback(progress, "compare"), **kwargs)
+
+
+compare.__doc__ = _core.compare.__doc__
 
 _add_signatures(globals(), (io, data, signals))
 __doc__ = __doc__ + "\n" + (_core.__doc__ or "")

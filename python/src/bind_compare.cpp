@@ -1,6 +1,7 @@
 // Python bindings of the model comparison: hyst.compare() and its result.
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/compare.hpp"
 #include "hyst/identify/cross_record_compare.hpp"
 #include "hyst/plot/comparison_html.hpp"
@@ -98,6 +100,20 @@ void bind_cross_record(py::module_& module) {
       .def("csv", &cross_record_csv, "The ranking as CSV text.");
 }
 
+//! A Python callable as a ProgressCallback, called with the GIL taken (the run releases it).
+ProgressCallback progress_callback(const py::object& progress) {
+  if (progress.is_none()) return {};
+  // Shared, so that copies of the callback never touch Python reference counts without the GIL.
+  std::shared_ptr<py::object> callable(new py::object(progress), [](py::object* object) {
+    py::gil_scoped_acquire gil;
+    delete object;
+  });
+  return [callable](const Progress& report) {
+    py::gil_scoped_acquire gil;
+    (*callable)(report.done, report.total, std::string(report.current));
+  };
+}
+
 }  // namespace
 
 void bind_compare(py::module_& module) {
@@ -166,8 +182,8 @@ void bind_compare(py::module_& module) {
          const std::optional<py::dict>& options, double timing_seconds, double no_fit_percent,
          const std::optional<py::object>& fit_records,
          const std::optional<py::object>& validate_records, bool leave_one_out,
-         const std::string& validation_start, const std::string& validation_align)
-          -> std::variant<ModelComparison, CrossRecordComparison> {
+         const std::string& validation_start, const std::string& validation_align,
+         const py::object& progress) -> std::variant<ModelComparison, CrossRecordComparison> {
         std::map<std::string, nlohmann::json> fit_options;
         if (options) {
           for (const auto& [name, value] : *options) {
@@ -188,6 +204,7 @@ void bind_compare(py::module_& module) {
           if (models) cross.models = *models;
           cross.fit_options = std::move(fit_options);
           cross.no_fit_percent = no_fit_percent;
+          cross.progress = progress_callback(progress);
           cross.validation.start = validation_start_from_string(validation_start);
           cross.validation.align = validation_alignment_from_string(validation_align);
           const auto fit = named_records(*fit_records, "fit_records");
@@ -213,6 +230,7 @@ void bind_compare(py::module_& module) {
         compare.timing_seconds = timing_seconds;
         compare.no_fit_percent = no_fit_percent;
         compare.fit_options = std::move(fit_options);
+        compare.progress = progress_callback(progress);
         const auto v = as_span(*input, "input");
         const auto y = as_span(*output, "output");
         py::gil_scoped_release release;
@@ -222,6 +240,7 @@ void bind_compare(py::module_& module) {
       "validate_fraction"_a = 0.25, "options"_a = py::none(), "timing_seconds"_a = 0.05,
       "no_fit_percent"_a = 20.0, "fit_records"_a = py::none(), "validate_records"_a = py::none(),
       "leave_one_out"_a = false, "validation_start"_a = "rest", "validation_align"_a = "none",
+      "progress"_a = py::none(),
       "Fits the models (default: every model with a fitter) and ranks them by free-run NRMSE on "
       "data they were not fitted on. With input and output: fitted on the first part of the "
       "record and ranked on the held-out last part (validate_fraction; this measures "
@@ -232,7 +251,9 @@ void bind_compare(py::module_& module) {
       "validation_align ('none', 'first-sample'); leave_one_out=True instead holds each fit "
       "record out in turn. Returns a CrossRecordComparison. options: {model name: {fit option: "
       "value}}. A model whose fit fails gets a row with the reason (ok False); the others still "
-      "run.");
+      "run. progress: called as progress(done, total, current) before each model's fit and once "
+      "at the end (done == total, current ''); the package's hyst.compare also takes True (a "
+      "tqdm bar when tqdm is installed, else lines on standard error).");
 }
 
 }  // namespace hyst::python

@@ -3,6 +3,7 @@ reports a failing fit per model, and hyst.fit("narx", ...) gives a model that si
 saves like every other."""
 
 import shutil
+import sys
 
 import numpy as np
 import pytest
@@ -165,3 +166,32 @@ def test_compare_leave_one_out():
     with pytest.raises(hyst.Error, match="validation start 'later' is not known"):
         hyst.compare(fit_records=[sine_record(2.0)], validate_records=[sine_record(1.0)],
                      validation_start="later")
+
+
+def progress_record():
+    v = np.sin(np.linspace(0.0, 4.0 * np.pi, 400))
+    return v, v + 0.2 * np.sign(np.gradient(v))
+
+
+def test_progress_callback_is_called_before_each_model_and_at_the_end():
+    calls = []
+    hyst.compare(*progress_record(), ["pi", "maxwell_slip"],
+                 progress=lambda done, total, current: calls.append((done, total, current)))
+    assert calls == [(0, 2, "pi"), (1, 2, "maxwell_slip"), (2, 2, "")]
+    with pytest.raises(TypeError, match="progress must be None, True or a callable"):
+        hyst.compare(*progress_record(), ["pi"], progress="yes")
+
+
+def test_progress_true_draws_lines_without_tqdm(monkeypatch, capsys):
+    monkeypatch.setitem(sys.modules, "tqdm.auto", None)
+    hyst.compare(*progress_record(), ["pi", "maxwell_slip"], progress=True)
+    lines = capsys.readouterr().err.splitlines()
+    assert lines[0].startswith("hyst.compare: 0/2, now pi; ")
+    assert lines[-1].startswith("hyst.compare: 2/2; ")
+
+
+def test_progress_true_draws_a_tqdm_bar_when_installed(capsys):
+    pytest.importorskip("tqdm")
+    hyst.compare(*progress_record(), ["pi", "maxwell_slip"], progress=True)
+    err = capsys.readouterr().err
+    assert "hyst.compare" in err and "2/2" in err

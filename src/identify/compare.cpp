@@ -156,8 +156,12 @@ ModelComparison compare_models(std::span<const double> input, std::span<const do
   const auto entries = compared_models(options.models, options.fit_options, registry);
   ModelComparison comparison;
   comparison.split = split_by_fraction(input.size(), options.validate_fraction);
-  for (const auto* entry : entries)
-    comparison.ranking.push_back(compare_one(*entry, input, output, comparison.split, options));
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    if (options.progress) options.progress({"models", k, entries.size(), entries[k]->name});
+    comparison.ranking.push_back(
+        compare_one(*entries[k], input, output, comparison.split, options));
+  }
+  if (options.progress) options.progress({"models", entries.size(), entries.size(), {}});
   std::stable_sort(comparison.ranking.begin(), comparison.ranking.end(),
                    [](const ComparedModel& a, const ComparedModel& b) {
                      if (a.ok != b.ok) return a.ok;

@@ -206,8 +206,11 @@ CrossRecordComparison run_rounds(const std::vector<FitRound>& rounds,
     for (const auto& name : names_of(round.held_out))
       comparison.validate_records.push_back(name);
   }
-  for (const auto* entry : entries)
-    comparison.ranking.push_back(compare_one(*entry, rounds, options));
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    if (options.progress) options.progress({"models", k, entries.size(), entries[k]->name});
+    comparison.ranking.push_back(compare_one(*entries[k], rounds, options));
+  }
+  if (options.progress) options.progress({"models", entries.size(), entries.size(), {}});
   std::stable_sort(comparison.ranking.begin(), comparison.ranking.end(),
                    [](const CrossRecordRow& a, const CrossRecordRow& b) {
                      if (a.ok != b.ok) return a.ok;

@@ -263,6 +263,38 @@ case_every_model() {
   done
 }
 
+case_progress() {
+  # Progress goes to standard error: in a pipe only with --progress (one line per step); on a
+  # terminal (a pseudo-terminal from script(1)) redrawn in place, and never with --quiet.
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  write_input_csv in.csv 400
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
+  expect_ok "$HYST" compare --data data.csv --input v --output y --models pi,maxwell_slip \
+    --no-plots --out-dir quiet   # expect_ok: nothing on standard error in a pipe
+  "$HYST" compare --data data.csv --input v --output y --models pi,maxwell_slip --no-plots \
+    --out-dir lines --progress >/dev/null 2>progress.txt || fail "compare --progress failed"
+  [ "$(grep -c '^hyst compare: ' progress.txt)" -eq 3 ] || fail "3 lines expected: $(cat progress.txt)"
+  grep -q '^hyst compare: 0/2 models, now pi; ' progress.txt || fail "$(cat progress.txt)"
+  grep -q '^hyst compare: 1/2 models, now maxwell_slip; .* about .* left$' progress.txt ||
+    fail "$(cat progress.txt)"
+  grep -q '^hyst compare: 2/2 models; .* elapsed$' progress.txt || fail "$(cat progress.txt)"
+  "$HYST" fit pi --data data.csv --input v --output y --out m.json --progress >/dev/null \
+    2>fit.txt || fail "fit --progress failed"
+  grep -q '^hyst fit: fitting pi ...$' fit.txt && grep -q '^hyst fit: fitting pi: done after ' fit.txt ||
+    fail "fit progress: $(cat fit.txt)"
+  expect_error 2 "--progress excludes --quiet" -- \
+    "$HYST" fit pi --data data.csv --input v --output y --out m.json --progress --quiet
+  if command -v script >/dev/null; then
+    script -qec "'$HYST' compare --data data.csv --input v --output y --models pi,maxwell_slip \
+      --no-plots --out-dir tty >/dev/null" /dev/null >tty.txt || fail "compare on a terminal failed"
+    grep -q $'\r''hyst compare: 2/2 models; ' tty.txt || fail "no redrawn line: $(cat -v tty.txt)"
+    grep -q $'\x1b\[K' tty.txt || fail "the line is not cleared: $(cat -v tty.txt)"
+    script -qec "'$HYST' compare --data data.csv --input v --output y --models pi --no-plots \
+      --out-dir tty --quiet >/dev/null" /dev/null >tty_quiet.txt || fail "--quiet failed"
+    ! grep -q 'hyst compare:' tty_quiet.txt || fail "--quiet drew: $(cat -v tty_quiet.txt)"
+  fi
+}
+
 case_compare() {
   # A record simulated from the known PI model: PI with its thresholds is ranked first; a model
   # whose fit fails (NARX on 30 samples) gets a failed row and the others still run.

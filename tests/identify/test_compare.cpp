@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -99,6 +100,23 @@ TEST(CompareModels, FailingFitIsReportedAndOthersRun) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3 + 4);  // header, 2 models, 4 references
   EXPECT_NE(csv.find("\n1,pi,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\n-,narx,failed,,,,,,,,\"NARX fit:"), std::string::npos) << csv;
+}
+
+// Before each model (also one whose fit fails) and once at the end, in the order given.
+TEST(CompareModels, ProgressIsToldBeforeEachModelAndAtTheEnd) {
+  const auto v = test::random_walk(40, 7);
+  const auto y = pi_output(v);
+  CompareOptions options;
+  options.models = {"narx", "pi"};
+  options.timing_seconds = 0.0;
+  std::vector<std::tuple<std::string, std::size_t, std::size_t, std::string>> told;
+  options.progress = [&](const Progress& progress) {
+    told.emplace_back(progress.task, progress.done, progress.total, progress.current);
+  };
+  compare_models(v, y, options);
+  const std::vector<std::tuple<std::string, std::size_t, std::size_t, std::string>> expected{
+      {"models", 0, 2, "narx"}, {"models", 1, 2, "pi"}, {"models", 2, 2, ""}};
+  EXPECT_EQ(told, expected);
 }
 
 TEST(CompareModels, BadDataIsReportedForEveryModel) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -90,6 +91,20 @@ TEST(CrossRecordCompare, FitOnOneAmplitudeRankOnAnother) {
                       0),
             0u)
       << csv;
+}
+
+TEST(CrossRecordCompare, ProgressCountsModelsNotRecords) {
+  const auto large = pi_record("a1.5", sine_record(1.5, 3, false));
+  const auto small = pi_record("a0.8", sine_record(0.8, 3, false));
+  CrossRecordOptions options;
+  options.models = {"pi"};
+  options.fit_options["pi"] = {{"thresholds", kPiThresholds}};
+  std::vector<std::pair<std::size_t, std::size_t>> told;
+  options.progress = [&](const Progress& progress) {
+    told.emplace_back(progress.done, progress.total);
+  };
+  compare_leave_one_out({large, small}, options);
+  EXPECT_EQ(told, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}, {1, 1}}));
 }
 
 TEST(CrossRecordCompare, ContinueStartRunsOnFromTheFitRecord) {

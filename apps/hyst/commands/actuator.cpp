@@ -19,6 +19,7 @@
 #include "hyst/io/csv.hpp"
 #include "hyst/io/output_set.hpp"
 #include "hyst/plot/gnuplot.hpp"
+#include "progress_display.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -34,6 +35,7 @@ struct ActuatorCompareOptions {
   std::string config;
   std::string out_dir;
   bool no_plots = false;
+  ProgressFlags progress;
 };
 
 void simulate(const SimulateOptions& options) {
@@ -79,7 +81,10 @@ void compare(const ActuatorCompareOptions& options) {
   for (const auto& pole : plant.poles())
     fmt::print(" ({:.6g}{:+.6g}j)", pole.real(), pole.imag());
   fmt::print(" rad/s, delay {} s (simulated, not measured)\n\n", config.plant.delay);
-  const auto comparison = compare_strategies(config, scenario_references(config));
+  ProgressDisplay display("hyst actuator compare", options.progress.mode());
+  const auto comparison = display.run("simulating every strategy on every scenario", [&] {
+    return compare_strategies(config, scenario_references(config));
+  });
   const auto markdown = comparison_markdown(comparison);
   fmt::print("{}", markdown);
   if (options.out_dir.empty()) return;
@@ -134,10 +139,12 @@ void add_actuator_command(CLI::App& app) {
       "Compare open loop, inverse feedforward, PID and PID + feedforward on the configuration's "
       "scenarios (step, sines, triangle with internal loops); print the table.");
   cmp->add_option("--config", compare_options->config, "Actuator configuration (JSON)")->required();
-  cmp->add_option("--out-dir", compare_options->out_dir,
-                  "Folder (must exist) for comparison.md, comparison.csv and the tracking and "
-                  "error plots");
+  cmp->add_option(
+      "--out-dir", compare_options->out_dir,
+      "Folder (created when missing) for comparison.md, comparison.csv and the tracking and "
+      "error plots");
   cmp->add_flag("--no-plots", compare_options->no_plots, "Write the tables only");
+  add_progress_flags(*cmp, compare_options->progress);
   cmp->footer(R"(Example:
   hyst actuator compare --config examples/config/msma_assumed.json --out-dir results)");
   cmp->callback([compare_options] { compare(*compare_options); });

@@ -24,6 +24,7 @@
 #include "hyst/io/output_set.hpp"
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/comparison_plots.hpp"
+#include "progress_display.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -45,6 +46,7 @@ struct CompareCommandOptions {
   bool leave_one_out = false;
   std::string validation_start = "rest";
   std::string validation_align = "none";
+  ProgressFlags progress;
 };
 
 std::vector<std::string> split_list(const std::string& text, std::string_view option,
@@ -125,6 +127,8 @@ void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions c
   io::OutputSet set(folder, names);
   const DataSource data(options.data, options.table);
   const auto fit = read_records(data, options.fit_records, "--fit-records");
+  ProgressDisplay display("hyst compare", options.progress.mode());
+  compare.progress = display.callback();
   const auto comparison =
       options.leave_one_out
           ? compare_leave_one_out(fit, compare)
@@ -187,6 +191,8 @@ void run(const CompareCommandOptions& options) {
 
   const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
+  ProgressDisplay display("hyst compare", options.progress.mode());
+  compare.progress = display.callback();
   const auto comparison = compare_models(record.input, record.output, compare);
 
   const auto markdown = model_comparison_markdown(comparison);
@@ -292,6 +298,7 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
+  add_progress_flags(*command, options->progress);
   command
       ->add_option("--html", options->html,
                    "Also write one self-contained HTML page with the table and SVG plots ('-': "

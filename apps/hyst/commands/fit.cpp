@@ -24,6 +24,7 @@
 #include "hyst/io/json_text.hpp"
 #include "hyst/registry/forc_fit.hpp"
 #include "hyst/registry/model_registry.hpp"
+#include "progress_display.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -54,6 +55,7 @@ struct FitOptions {
   std::size_t hold_out_every = 0;
   std::string time;    //!< --time COLUMN: the record's sample time from its time column
   std::string tables;  //!< --tables 6,1: several tables of an aixACCT export fitted together
+  ProgressFlags progress;
 };
 
 //! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
@@ -248,9 +250,11 @@ void run_tables_fit(const FitOptions& options, const ModelEntry& entry) {
   std::vector<FitRecord> records;
   for (const auto& pair : columns)
     records.push_back({pair.input, pair.output});
+  ProgressDisplay display("hyst fit", options.progress.mode());
   auto outcome = [&] {
     try {
-      return entry.fit_records(records, sample_times, fit_json);
+      return display.run(fmt::format("fitting {} to {} tables", entry.name, records.size()),
+                         [&] { return entry.fit_records(records, sample_times, fit_json); });
     } catch (const Error& error) {
       throw Error(
           fmt::format("fitting '{}' to {} tables {} (input '{}', output '{}'): {}", entry.name,
@@ -363,9 +367,11 @@ void run(const FitOptions& options) {
 
   // The fitters and the preprocessing know the samples, not where they came from (constant data,
   // two samples, a resampling step asking for too many samples): name the data here.
+  ProgressDisplay display("hyst fit", options.progress.mode());
   auto outcome = [&] {
     try {
-      return fit_model(entry, request);
+      return display.run(fmt::format("fitting {}", entry.name),
+                         [&] { return fit_model(entry, request); });
     } catch (const Error& error) {
       throw Error(fmt::format("fitting '{}' to {} (input '{}', output '{}'{}): {}", entry.name,
                               options.data, options.input, options.output,
@@ -454,6 +460,7 @@ void add_fit_command(CLI::App& app) {
       ->needs(validation);
   command->add_option("--cycles", options->cycles,
                       "Fit only cycles N, N-M or N- (1-based periods of the input)");
+  add_progress_flags(*command, options->progress);
   command->add_flag("--detrend", options->detrend,
                     "Remove linear drift between cycles so that the loop closes, in --data and in "
                     "the validation record (drift is a measurement artefact)");

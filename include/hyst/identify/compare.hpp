@@ -33,6 +33,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/data_split.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/identify/record_diagnosis.hpp"
@@ -55,6 +56,8 @@ struct CompareOptions {
   //! The samples are a time series (ARX is among the reference predictors); false for a record
   //! resampled on an input grid.
   bool time_series = true;
+  //! Told before each model's fit and at the end (task "models"); empty: nothing is told.
+  ProgressCallback progress;
 };
 
 //! One row of the comparison.

@@ -36,6 +36,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/identify/record_diagnosis.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -61,6 +62,8 @@ struct CrossRecordOptions {
   double no_fit_percent = 20.0;
   //! The records are time series (ARX joins the yardstick when the start is "continue").
   bool time_series = true;
+  //! Told before each model's fits and at the end (task "models"); empty: nothing is told.
+  ProgressCallback progress;
 };
 
 //! The error of one model on one held-out record, fitted on `fitted_on`.
