@@ -26,7 +26,7 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config \
   libmatio-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libboost-dev \
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-mypy python3-matplotlib \
   python3-nbclient python3-nbformat python3-ipykernel python3-tqdm gnuplot-nox \
-  clang libclang-rt-14-dev chromium
+  libjs-chart.js clang libclang-rt-14-dev chromium
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 

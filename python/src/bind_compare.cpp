@@ -167,12 +167,18 @@ void bind_compare(py::module_& module) {
       .def(
           "html",
           [](const ModelComparison& comparison, const InputArray& input, const InputArray& output,
-             const std::string& title) {
+             const std::string& title, const std::string& input_label,
+             const std::string& output_label) {
             return plot::model_comparison_html(comparison, as_span(input, "input"),
-                                               as_span(output, "output"), title);
+                                               as_span(output, "output"), title,
+                                               {input_label, output_label});
           },
-          "input"_a, "output"_a, "title"_a = "Model comparison",
-          "One self-contained HTML page: the ranking table and both figures as inline SVG.");
+          "input"_a, "output"_a, "title"_a = "Model comparison", "input_label"_a = "input",
+          "output_label"_a = "output",
+          "One self-contained interactive HTML page (Chart.js inline): the ranking table, sortable "
+          "by column, and the loops, outputs and errors over the whole record with the held-out "
+          "part shaded; zoom, pan, curves toggled from the legend, values on hover. The labels "
+          "name the axes, with units, e.g. 'V+ [V]'.");
 
   bind_cross_record(module);
   module.def(

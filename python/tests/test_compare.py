@@ -51,8 +51,9 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     assert best.beats_yardstick and best.report.status in ("converged", "iteration limit")
     assert comparison.yardstick.startswith("Yardstick (reference predictors")
     assert comparison.no_fit == "" and comparison.no_fit_percent == 20.0
-    page = comparison.html(v, y, title="PI & NARX")
-    assert "<h1>PI &amp; NARX</h1>" in page and page.count("<svg ") == 2
+    page = comparison.html(v, y, title="PI & NARX", input_label="v [V]", output_label="y [m]")
+    assert "<h1>PI &amp; NARX</h1>" in page and page.count("<canvas>") == 3
+    assert '"input_label":"v [V]"' in page and '"output_label":"y [m]"' in page
     if shutil.which("gnuplot"):
         comparison.write_plots(v, y, tmp_path / "loops.png", tmp_path / "errors.png")
         assert (tmp_path / "loops.png").stat().st_size > 0

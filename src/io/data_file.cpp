@@ -75,6 +75,12 @@ bool DataFile::has_column(std::string_view name) const {
   return std::find(names_.begin(), names_.end(), name) != names_.end();
 }
 
+std::string DataFile::unit(std::string_view name) const {
+  if (!aixacct_) return {};
+  const auto* column = aixacct_->measurements[aixacct_table_].find(name);
+  return column ? column->unit : std::string();
+}
+
 std::string DataFile::column_list() const {
   std::string list;
   for (const auto& name : names_)

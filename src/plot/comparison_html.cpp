@@ -1,14 +1,19 @@
 #include "hyst/plot/comparison_html.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <string_view>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
+#include "comparison_page_script.hpp"
+#include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
-#include "hyst/plot/comparison_plots.hpp"
-#include "hyst/plot/gnuplot.hpp"
 
 namespace hyst::plot {
 namespace {
@@ -43,23 +48,56 @@ std::string xml_escaped(std::string_view text) {
   return out;
 }
 
-std::vector<double> every_nth(const std::vector<double>& values, std::size_t stride) {
-  std::vector<double> kept;
-  for (std::size_t k = 0; k < values.size(); k += stride)
-    kept.push_back(values[k]);
-  if ((values.size() - 1) % stride != 0) kept.push_back(values.back());  // keep the last point
+//! Every stride-th sample number of n, and the last: the points a page draws.
+std::vector<std::size_t> page_samples(std::size_t n) {
+  const std::size_t stride = std::max<std::size_t>(1, (n + kMaxPagePoints - 1) / kMaxPagePoints);
+  std::vector<std::size_t> kept;
+  for (std::size_t k = 0; k < n; k += stride)
+    kept.push_back(k);
+  if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);
   return kept;
 }
 
-//! The figure as an SVG element drawn by gnuplot, its curves thinned to kMaxPagePoints.
-std::string page_svg(Figure figure) {
-  for (auto& series : figure.series) {
-    if (series.x.size() <= kMaxPagePoints) continue;
-    const std::size_t stride = (series.x.size() + kMaxPagePoints - 1) / kMaxPagePoints;
-    series.x = every_nth(series.x, stride);
-    series.y = every_nth(series.y, stride);
+std::vector<double> at(std::span<const double> values, const std::vector<std::size_t>& samples) {
+  std::vector<double> kept;
+  kept.reserve(samples.size());
+  for (const auto k : samples)
+    kept.push_back(values[k]);
+  return kept;
+}
+
+//! The page's data: the whole record and every fitted model's free run, thinned alike.
+std::string page_data(const ModelComparison& comparison, std::span<const double> input,
+                      std::span<const double> output, const ComparisonPageLabels& labels) {
+  const auto samples = page_samples(input.size());
+  nlohmann::json data = {{"input_label", labels.input},
+                         {"output_label", labels.output},
+                         {"validation_begin", comparison.split.validation_begin},
+                         {"sample", samples},
+                         {"input", at(input, samples)},
+                         {"measured", at(output, samples)},
+                         {"models", nlohmann::json::array()}};
+  for (const auto& row : comparison.ranking) {
+    if (!row.ok || row.simulated.size() != input.size()) continue;
+    data["models"].push_back({{"name", row.model}, {"simulated", at(row.simulated, samples)}});
   }
-  return svg_element(figure);
+  // "</" would end the <script> element that holds the JSON.
+  std::string text = data.dump();
+  for (auto at = text.find("</"); at != std::string::npos; at = text.find("</", at + 2))
+    text.replace(at, 2, "<\\/");
+  return text;
+}
+
+//! Chart.js, read where the set-up put it, to be inlined (the page needs no network).
+std::string plotting_library() {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(HYST_CHARTJS_FILE, error)) {
+    throw Error(
+        fmt::format("the HTML comparison page needs Chart.js, not found at '{}' "
+                    "(Debian package libjs-chart.js; make deps installs it)",
+                    HYST_CHARTJS_FILE));
+  }
+  return io::read_file(HYST_CHARTJS_FILE);
 }
 
 std::string table(const ModelComparison& comparison) {
@@ -90,16 +128,25 @@ std::string table(const ModelComparison& comparison) {
 }  // namespace
 
 std::string model_comparison_html(const ModelComparison& comparison, std::span<const double> input,
-                                  std::span<const double> output, const std::string& title) {
+                                  std::span<const double> output, const std::string& title,
+                                  const ComparisonPageLabels& labels) {
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{0}</title>\n"
       "<style>body{{font-family:sans-serif;margin:2em}}table{{border-collapse:collapse}}"
       "td,th{{border:1px solid #aaa;padding:3px 8px;text-align:right}}"
+      "th{{cursor:pointer;user-select:none}}th[data-order=ascending]::after{{content:' \\25B2'}}"
+      "th[data-order=descending]::after{{content:' \\25BC'}}"
       "td:nth-child(2),td:last-child{{text-align:left}}tr.failed{{color:#a00}}"
-      "figure{{margin:1.5em "
-      "0}}h1{{overflow-wrap:anywhere}}</style>\n</head>\n<body>\n<h1>{0}</h1>\n"
+      "figure{{margin:1.5em 0}}.chart{{position:relative;height:420px;max-width:1000px}}"
+      ".zoom-box{{position:absolute;display:none;border:1px dashed #333;"
+      "background:rgba(80,120,200,0.12);pointer-events:none}}"
+      "#page-errors{{color:#a00}}h1{{overflow-wrap:anywhere}}</style>\n</head>\n<body>\n"
+      "<h1>{0}</h1>\n"
       "<p>Every model was fitted on samples {1}..{2} and run in free run over the whole record; "
-      "the ranking is by the NRMSE on the held-out samples {3}..{4}.</p>\n",
+      "the ranking is by the NRMSE on the held-out samples {3}..{4} (shaded in the figures). "
+      "Click a column header to sort the table. In the figures: drag a box to zoom, shift-drag "
+      "to pan, the mouse wheel zooms, a double click resets; a legend entry shows or hides "
+      "that curve in every figure.</p>\n",
       xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
       comparison.split.validation_begin, comparison.split.validation_end - 1);
   if (const auto verdict = no_fit_line(comparison); !verdict.empty()) {
@@ -107,23 +154,32 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
   }
   html += fmt::format("<p id=\"yardstick\">{}</p>\n", xml_escaped(yardstick_line(comparison)));
   html += table(comparison);
+  html += "<pre id=\"page-errors\" hidden></pre>\n<pre id=\"selftest\" hidden></pre>\n";
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
                                       [](const ComparedModel& row) { return row.ok; });
-  if (any_fitted) {
-    html += "<figure id=\"loops\">\n" +
-            page_svg(model_comparison_loop_figure(comparison, input, output)) +
-            "<figcaption>Held-out part: measured and simulated loops.</figcaption>\n</figure>\n";
-    html += "<figure id=\"errors\">\n" +
-            page_svg(model_comparison_error_figure(comparison, output)) +
-            "<figcaption>Held-out part: error measured - simulated.</figcaption>\n</figure>\n";
+  if (!any_fitted) return html + "</body>\n</html>\n";
+  const std::pair<const char*, const char*> figures[] = {
+      {"loops", "The loops over the whole record: the fit part faded, the held-out part in full."},
+      {"outputs", "Measured and simulated output over the whole record."},
+      {"errors", "Error measured - simulated over the whole record."}};
+  for (const auto& [id, caption] : figures) {
+    html += fmt::format(
+        "<figure id=\"{}\">\n<div class=\"chart\"><canvas></canvas></div>\n"
+        "<figcaption>{}</figcaption>\n</figure>\n",
+        id, caption);
   }
+  html += "<script id=\"comparison-data\" type=\"application/json\">" +
+          page_data(comparison, input, output, labels) + "</script>\n";
+  html += "<script>\n" + plotting_library() + "\n</script>\n";
+  html += std::string("<script>\n") + detail::kComparisonPageScript + "</script>\n";
   return html + "</body>\n</html>\n";
 }
 
 void write_model_comparison_html(const std::filesystem::path& path,
                                  const ModelComparison& comparison, std::span<const double> input,
-                                 std::span<const double> output, const std::string& title) {
-  io::write_file_atomically(path, model_comparison_html(comparison, input, output, title));
+                                 std::span<const double> output, const std::string& title,
+                                 const ComparisonPageLabels& labels) {
+  io::write_file_atomically(path, model_comparison_html(comparison, input, output, title, labels));
 }
 
 }  // namespace hyst::plot

@@ -1,6 +1,7 @@
-// The HTML page of a model comparison and the SVG figures in it: the table has one row per model
-// (a failed one with its escaped reason), each fitted model has a curve in both figures (drawn by
-// gnuplot), and long curves are thinned so that the page stays small.
+// The HTML page of a model comparison: the table has one row per model (a failed one with its
+// escaped reason); the page's data holds the whole record and each fitted model's free run,
+// thinned for long records; Chart.js and the page's script are inline. What the page does in a
+// browser is tested by ctest cli_compare_html (headless Chromium).
 
 #include <cmath>
 #include <string>
@@ -15,6 +16,8 @@
 #include "hyst/plot/comparison_html.hpp"
 #include "hyst/plot/gnuplot.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace hyst {
 namespace {
 
@@ -25,7 +28,16 @@ std::size_t count(const std::string& text, const std::string& part) {
   return n;
 }
 
-TEST(ComparisonHtml, TableAndBothFiguresWithOneCurvePerFittedModel) {
+//! The JSON of <script id="comparison-data">.
+nlohmann::json page_data(const std::string& html) {
+  const std::string open = "<script id=\"comparison-data\" type=\"application/json\">";
+  const auto begin = html.find(open);
+  EXPECT_NE(begin, std::string::npos);
+  const auto end = html.find("</script>", begin);
+  return nlohmann::json::parse(html.substr(begin + open.size(), end - begin - open.size()));
+}
+
+TEST(ComparisonHtml, TableFiguresAndTheDataOfEveryFittedModel) {
   // 40 samples: PI fits, the NARX network has too many weights for them.
   const auto v = test::random_walk(40, 3);
   const PrandtlIshlinskii pi({.thresholds = {0.0, 0.5}, .weights = {1.0, 0.5}});
@@ -35,7 +47,8 @@ TEST(ComparisonHtml, TableAndBothFiguresWithOneCurvePerFittedModel) {
   options.models = {"pi", "narx"};
   options.timing_seconds = 0.0;
   const auto comparison = compare_models(v, y, options);
-  const auto html = plot::model_comparison_html(comparison, v, y, "PI <test> & more");
+  const auto html = plot::model_comparison_html(comparison, v, y, "PI <test> & more",
+                                                {"V+ [V]", "y </script> [m]"});
 
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<h1>PI &lt;test&gt; &amp; more</h1>"), std::string::npos);
@@ -43,28 +56,33 @@ TEST(ComparisonHtml, TableAndBothFiguresWithOneCurvePerFittedModel) {
   EXPECT_EQ(count(html, "<tr class=\"fitted\"><td>1</td><td>pi</td>"), 1u);
   EXPECT_EQ(count(html, "<tr class=\"failed\"><td>-</td><td>narx</td>"), 1u);
   EXPECT_NE(html.find("failed: NARX fit:"), std::string::npos);
-  // Two SVG figures drawn by gnuplot, each curve with its legend entry. Loops: measured and pi;
-  // errors: pi.
-  EXPECT_EQ(count(html, "<svg"), 2u);
-  EXPECT_EQ(count(html, "<?xml"), 0u);  // inline elements, not documents
-  EXPECT_EQ(count(html, "<text>measured</text>"), 1u);
-  EXPECT_EQ(count(html, "<text>pi</text>"), 2u);
-  EXPECT_EQ(count(html, "<script"), 0u);  // self-contained, nothing to run
+  for (const std::string id : {"loops", "outputs", "errors"}) {
+    EXPECT_EQ(count(html, "<figure id=\"" + id + "\">"), 1u) << id;
+  }
+  EXPECT_EQ(count(html, "<canvas>"), 3u);
+  EXPECT_EQ(count(html, "<svg"), 0u);
+  // Chart.js, the page's script and its data are inline: nothing is fetched.
+  EXPECT_NE(html.find("Chart.js v3"), std::string::npos);
+  EXPECT_NE(html.find("heldOutShading"), std::string::npos);
+  EXPECT_EQ(count(html, " src="), 0u);
+  EXPECT_EQ(count(html, "y </script> [m]"), 0u);  // a label cannot end the data's element
+
+  const auto data = page_data(html);
+  EXPECT_EQ(data["input_label"], "V+ [V]");
+  EXPECT_EQ(data["output_label"], "y </script> [m]");
+  EXPECT_EQ(data["validation_begin"], comparison.split.validation_begin);
+  EXPECT_EQ(data["sample"].size(), 40u);  // the whole record, not only the held-out part
+  EXPECT_EQ(data["input"].get<std::vector<double>>(), v);
+  EXPECT_EQ(data["measured"].get<std::vector<double>>(), y);
+  ASSERT_EQ(data["models"].size(), 1u);  // the failed NARX has no curve
+  EXPECT_EQ(data["models"][0]["name"], "pi");
+  EXPECT_EQ(data["models"][0]["simulated"].get<std::vector<double>>(),
+            comparison.ranking[0].simulated);
 }
 
-// gnuplot's SVG of a figure: an <svg> element of the figure's size with one group per series;
-// long curves are thinned for the page, so the loop of 40 000 samples stays small.
-TEST(ComparisonHtml, FiguresAreGnuplotSvgOfBoundedSize) {
-  plot::Figure figure{.title = "line", .x_label = "x", .y_label = "y", .width = 400, .height = 300};
-  figure.series.push_back({.label = "a<b", .x = {0.0, 1.0, 2.0}, .y = {0.0, 2.0, 1.0}});
-  const auto svg = plot::svg_element(figure);
-  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
-  EXPECT_NE(svg.find("width=\"400\" height=\"300\""), std::string::npos);
-  EXPECT_NE(svg.find("<g id=\"gnuplot_plot_1\""), std::string::npos);
-  EXPECT_EQ(svg.find("<g id=\"gnuplot_plot_2\""), std::string::npos);
-  EXPECT_EQ(count(svg, "<text>a&lt;b</text>"), 1u);
-
-  const auto v = test::random_walk(40000, 5);
+// Long records are thinned to evenly spaced samples, the last one kept, so the page stays small.
+TEST(ComparisonHtml, LongRecordsAreThinnedForThePage) {
+  const auto v = test::random_walk(40001, 5);
   const PrandtlIshlinskii pi({.thresholds = {0.0, 0.5}, .weights = {1.0, 0.5}});
   auto state = pi.initial_state();
   const auto y = simulate(pi, state, v);
@@ -73,11 +91,27 @@ TEST(ComparisonHtml, FiguresAreGnuplotSvgOfBoundedSize) {
   options.timing_seconds = 0.0;
   const auto comparison = compare_models(v, y, options);
   const auto html = plot::model_comparison_html(comparison, v, y, "long record");
-  // 10 000 held-out samples per curve, 3 curves: about 40 bytes per point unthinned.
-  EXPECT_LT(html.size(), 400'000u);
-  EXPECT_EQ(count(html, "<text>measured</text>"), 1u);
-  EXPECT_EQ(count(html, "<text>pi</text>"), 2u);
+  const auto data = page_data(html);
+  const auto samples = data["sample"].get<std::vector<std::size_t>>();
+  ASSERT_LE(samples.size(), 2001u);
+  EXPECT_EQ(samples.front(), 0u);
+  EXPECT_EQ(samples.back(), 40000u);
+  EXPECT_EQ(samples[1] - samples[0], samples[2] - samples[1]);
+  EXPECT_EQ(data["input"][1], v[samples[1]]);
+  EXPECT_LT(html.size(), 600'000u);  // Chart.js is about 200 kB of it
+}
 
+// gnuplot's SVG of a figure (the static figures for papers): an <svg> element of the figure's
+// size with one group per series.
+TEST(ComparisonHtml, StaticFiguresAreGnuplotSvg) {
+  plot::Figure figure{.title = "line", .x_label = "x", .y_label = "y", .width = 400, .height = 300};
+  figure.series.push_back({.label = "a<b", .x = {0.0, 1.0, 2.0}, .y = {0.0, 2.0, 1.0}});
+  const auto svg = plot::svg_element(figure);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("width=\"400\" height=\"300\""), std::string::npos);
+  EXPECT_NE(svg.find("<g id=\"gnuplot_plot_1\""), std::string::npos);
+  EXPECT_EQ(svg.find("<g id=\"gnuplot_plot_2\""), std::string::npos);
+  EXPECT_EQ(count(svg, "<text>a&lt;b</text>"), 1u);
   plot::Figure empty;
   EXPECT_HYST_ERROR(plot::svg_element(empty), "figure has no series to plot");
 }

@@ -213,17 +213,22 @@ void run(const CompareCommandOptions& options) {
   }
   const auto html_title =
       fmt::format("Model comparison: {} -> {} ({})", options.input, options.output, options.data);
+  const auto labelled = [&](const std::string& column) {
+    const auto unit = data.unit(column);
+    return unit.empty() ? column : fmt::format("{} [{}]", column, unit);
+  };
+  const plot::ComparisonPageLabels labels{labelled(options.input), labelled(options.output)};
   if (html_in_set) {
     plot::write_model_comparison_html(set.staged(names.back()), comparison, record.input,
-                                      record.output, html_title);
+                                      record.output, html_title, labels);
   }
   set.publish();
   if (html_on_stdout) {
     write_text_output(options.html, plot::model_comparison_html(comparison, record.input,
-                                                                record.output, html_title));
+                                                                record.output, html_title, labels));
   } else if (!options.html.empty() && !html_in_set) {
     plot::write_model_comparison_html(options.html, comparison, record.input, record.output,
-                                      html_title);
+                                      html_title, labels);
   }
   if (!options.html.empty()) {
     written += fmt::format("; {}", options.html);

@@ -48,6 +48,9 @@ class DataFile {
   std::string choose(std::string_view given, std::string_view preferred,
                      std::string_view option) const;
 
+  //! The unit of a column where the file states it (aixACCT: "V" of "V+ [V]"), else "".
+  std::string unit(std::string_view name) const;
+
   //! "t, v, y".
   std::string column_list() const;
 
