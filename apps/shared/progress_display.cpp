@@ -76,6 +76,13 @@ void ProgressDisplay::draw(const Progress& progress) {
   if (terminal_ && !final && progress.done > 0 && now - last_draw_ < kRedrawInterval) return;
   last_draw_ = now;
   const double seconds = elapsed();
+  if (ticking_) {  // the counted parts of the step the ticker shows (a fit's starts)
+    detail_ = fmt::format("{}/{} {}", progress.done, progress.total, progress.task);
+    if (!final && !progress.current.empty()) detail_ += fmt::format(", now {}", progress.current);
+    write_line(fmt::format("{}: {}; {} elapsed", ticker_text_, detail_, seconds_text(seconds)),
+               false);
+    return;
+  }
   std::string text = fmt::format("{}/{} {}", progress.done, progress.total, progress.task);
   if (!final && !progress.current.empty()) text += fmt::format(", now {}", progress.current);
   text += fmt::format("; {} elapsed", seconds_text(seconds));
@@ -91,13 +98,16 @@ void ProgressDisplay::start_ticker(std::string_view what) {
   if (!enabled_) return;
   const std::lock_guard lock(mutex_);
   ticker_text_ = std::string(what);
+  detail_.clear();
   ticking_ = true;
   write_line(fmt::format("{} ...", ticker_text_), false);
   if (!terminal_) return;  // a pipe gets the start and the end line only
   ticker_ = std::thread([this] {
     std::unique_lock lock(mutex_);
     while (!wake_.wait_for(lock, kTickInterval, [this] { return !ticking_; })) {
-      write_line(fmt::format("{}, {} elapsed", ticker_text_, seconds_text(elapsed())), false);
+      write_line(fmt::format("{}{}{}; {} elapsed", ticker_text_, detail_.empty() ? "" : ": ",
+                             detail_, seconds_text(elapsed())),
+                 false);
     }
   });
 }

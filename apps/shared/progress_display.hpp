@@ -40,8 +40,8 @@ class ProgressDisplay {
   //! Draws each report of a counted run ("3/16 models, now gpi; 4.2 s elapsed, about 18 s
   //! left"); empty when the display is off.
   ProgressCallback callback();
-  //! Runs `work` while `what` (e.g. "fitting gpi") is shown with the elapsed time, for a step
-  //! without a count; returns what `work` returns.
+  //! Runs `work` while `what` (e.g. "fitting gpi") is shown with the elapsed time, and with the
+  //! counts that callback() gets meanwhile (a fit's starts); returns what `work` returns.
   template <class Work>
   auto run(std::string_view what, Work&& work) {
     start_ticker(what);
@@ -70,6 +70,7 @@ class ProgressDisplay {
   std::condition_variable wake_;
   bool ticking_ = false;
   std::string ticker_text_;
+  std::string detail_;  // the last count told during the ticker's step
   std::thread ticker_;
 };
 

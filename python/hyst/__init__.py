@@ -21,6 +21,8 @@ _FITS = ("fit", "fit_records", "fit_prandtl_ishlinskii", "fit_preisach_forcs",
 
 def _returning_fit_result(function):
     def fit(*args, **kwargs):
+        if "progress" in kwargs:
+            kwargs["progress"] = _as_progress_callback(kwargs["progress"], function.__name__)
         return FitResult(function(*args, **kwargs))
     fit.__name__ = fit.__qualname__ = function.__name__
     fit.__doc__ = function.__doc__

@@ -29,7 +29,7 @@ class _Bar:
 
     def __call__(self, done, total, current):
         if self.bar is None:
-            self.bar = self.tqdm(total=total, desc=f"hyst.{self.task}", unit="model")
+            self.bar = self.tqdm(total=total, desc=f"hyst.{self.task}", unit="step")
         self.bar.update(done - self.bar.n)
         self.bar.set_postfix_str(current)
         if done >= total:

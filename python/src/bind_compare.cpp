@@ -100,20 +100,6 @@ void bind_cross_record(py::module_& module) {
       .def("csv", &cross_record_csv, "The ranking as CSV text.");
 }
 
-//! A Python callable as a ProgressCallback, called with the GIL taken (the run releases it).
-ProgressCallback progress_callback(const py::object& progress) {
-  if (progress.is_none()) return {};
-  // Shared, so that copies of the callback never touch Python reference counts without the GIL.
-  std::shared_ptr<py::object> callable(new py::object(progress), [](py::object* object) {
-    py::gil_scoped_acquire gil;
-    delete object;
-  });
-  return [callable](const Progress& report) {
-    py::gil_scoped_acquire gil;
-    (*callable)(report.done, report.total, std::string(report.current));
-  };
-}
-
 }  // namespace
 
 void bind_compare(py::module_& module) {

@@ -340,7 +340,7 @@ void bind_registry(py::module_& module) {
          const std::optional<InputArray>& validation_output, std::optional<std::string> cycles,
          bool detrend, std::string_view resample, double resample_step, double band,
          std::string_view validation_start, std::string_view validation_align,
-         const py::kwargs& options) {
+         const py::object& progress, const py::kwargs& options) {
         const auto& entry = registry().find(name);
         if (!entry.can_fit()) {
           throw Error(fmt::format("model '{}' has no fitter", name));
@@ -363,6 +363,7 @@ void bind_registry(py::module_& module) {
         if (cycles) request.preprocessing.cycles = data::cycle_range_from_string(*cycles);
         request.preprocessing.resample = data::resample_method_from_string(resample);
         request.preprocessing.resample_step = resample_step;
+        request.progress = progress_callback(progress);
         std::optional<FitOutcome> outcome;
         {
           py::gil_scoped_release release;
@@ -373,7 +374,7 @@ void bind_registry(py::module_& module) {
       "name"_a, "input"_a, "output"_a, "validation_input"_a = py::none(),
       "validation_output"_a = py::none(), py::kw_only(), "cycles"_a = py::none(),
       "detrend"_a = false, "resample"_a = "none", "resample_step"_a = 0.0, "band"_a = 0.0,
-      "validation_start"_a = "rest", "validation_align"_a = "none",
+      "validation_start"_a = "rest", "validation_align"_a = "none", "progress"_a = py::none(),
       "Fits a registered model by name: returns (Model, FitReport). A separate validation record "
       "is predicted from validation_start: \"rest\" (the model's initial state), \"periodic\" "
       "(the record's own periodic steady state) or \"continue\" (where the fit record ended), "
@@ -386,7 +387,9 @@ void bind_registry(py::module_& module) {
       "resamples each branch; band is the hysteresis band (0 = 2 % of the input range). "
       "detrend also removes the drift of validation_input/validation_output (drift is a "
       "measurement artefact); cycles and resampling are fit-only. FitReport.preprocessing "
-      "lists the steps applied.");
+      "lists the steps applied. progress: progress(done, total, current) as a fitter with "
+      "several starts (GPI, Bouc-Wen, Duhem, Jiles-Atherton, NARX, ...) runs them; the package's "
+      "hyst.fit also takes True (a tqdm bar, or lines on standard error).");
   module.def(
       "fit_records",
       [](const std::string& name, const py::sequence& records,

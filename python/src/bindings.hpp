@@ -14,6 +14,8 @@
 #include <pybind11/stl/filesystem.h>
 #include <nlohmann/json.hpp>
 
+#include "hyst/core/progress.hpp"
+
 namespace hyst::python {
 
 namespace py = pybind11;
@@ -30,6 +32,9 @@ using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast
 std::span<const double> as_span(const InputArray& array, std::string_view name);
 //! The samples copied into a vector (for parameters, which the models keep).
 std::vector<double> as_vector(const InputArray& array, std::string_view name);
+//! A Python callable progress(done, total, current) as a ProgressCallback (empty for None),
+//! called with the GIL taken from a run that released it.
+ProgressCallback progress_callback(const py::object& progress);
 
 //! A writeable float64 array that takes over the vector's memory (no copy); a capsule frees it.
 py::array_t<double> to_array(std::vector<double>&& values);

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/core/progress.hpp"
 #include "hyst/io/limits.hpp"
 
 #ifndef HYST_VERSION
@@ -66,6 +67,20 @@ std::string format_list(std::span<const double> values) {
     text += fmt::format("{}{}", k ? ", " : "", values[k]);
   }
   return text + "]";
+}
+
+// A Python callable as a ProgressCallback, called with the GIL taken (the run releases it).
+ProgressCallback progress_callback(const py::object& progress) {
+  if (progress.is_none()) return {};
+  // Shared, so that copies of the callback never touch Python reference counts without the GIL.
+  std::shared_ptr<py::object> callable(new py::object(progress), [](py::object* object) {
+    py::gil_scoped_acquire gil;
+    delete object;
+  });
+  return [callable](const Progress& report) {
+    py::gil_scoped_acquire gil;
+    (*callable)(report.done, report.total, std::string(report.current));
+  };
 }
 
 py::object json_to_python(const nlohmann::json& value) {

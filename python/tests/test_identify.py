@@ -105,3 +105,17 @@ def test_termination_names():
     assert [t.name for t in (hyst.Termination.converged, hyst.Termination.max_iterations,
                              hyst.Termination.no_progress, hyst.Termination.failed)] == [
         "converged", "max_iterations", "no_progress", "failed"]
+
+
+def test_fit_progress_tells_every_start_of_a_multistart_fit():
+    v = np.sin(np.linspace(0.0, 4.0 * np.pi, 300))
+    y = v + 0.2 * np.cos(np.linspace(0.0, 4.0 * np.pi, 300))
+    calls = []
+    result = hyst.fit("gpi", v, y, max_iterations=50,
+                      progress=lambda done, total, current: calls.append((done, total, current)))
+    assert isinstance(result, hyst.FitResult)
+    assert calls[0][0] == 0 and calls[-1] == (calls[0][1], calls[0][1], "")
+    assert [done for done, _, _ in calls] == sorted(done for done, _, _ in calls)
+    silent = []
+    hyst.fit("pi", v, y, progress=lambda *told: silent.append(told))
+    assert silent == []

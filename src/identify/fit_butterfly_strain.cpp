@@ -379,7 +379,8 @@ ButterflyStrain solve_direct(std::span<const RecordView> records,
   const auto starts = initial_guesses(design, grid, options);
   const detail::MultistartBudget budget{.screening_iterations = kScreeningIterations,
                                         .refined_starts = kRefinedStarts,
-                                        .max_iterations = options.max_iterations};
+                                        .max_iterations = options.max_iterations,
+                                        .progress = options.progress};
   const auto runs = detail::run_multistart(
       starts.size(), budget,
       [&](std::size_t s, std::size_t iterations) {

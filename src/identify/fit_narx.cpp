@@ -735,7 +735,8 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
     training.monitor_output = output.subspan(train_end);
   }
   const auto runs = detail::run_multistart(
-      options.starts, {.screen = false, .max_iterations = options.max_iterations},
+      options.starts,
+      {.screen = false, .max_iterations = options.max_iterations, .progress = options.progress},
       [&](std::size_t s, std::size_t iterations) {
         return train(training, options.seed + s, iterations);
       },

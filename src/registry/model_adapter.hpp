@@ -206,6 +206,7 @@ template <class Codec, class Options, class Fit>
 FitOutcome fit_with_table(const FitRequest& request, const FieldTable<Options>& table, Fit fit) {
   auto options = table.read(request.options, "fit options");
   options.validate_fraction = request.validate_fraction;
+  if constexpr (requires { options.progress; }) options.progress = request.progress;
   auto result = fit(request.input, request.output, options);
   if constexpr (requires { result.initial_state; }) {
     return {std::make_unique<ModelAdapter<Codec>>(std::move(result.model),

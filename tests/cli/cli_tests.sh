@@ -282,6 +282,12 @@ case_progress() {
     2>fit.txt || fail "fit --progress failed"
   grep -q '^hyst fit: fitting pi ...$' fit.txt && grep -q '^hyst fit: fitting pi: done after ' fit.txt ||
     fail "fit progress: $(cat fit.txt)"
+  # A fit with several starts tells each of them.
+  "$HYST" fit gpi --data data.csv --input v --output y --out g.json --option max_iterations=30 \
+    --progress >/dev/null 2>gpi.txt || fail "fit gpi --progress failed"
+  grep -q '^hyst fit: fitting gpi: 0/[0-9]* starts, now screening; ' gpi.txt &&
+    grep -q '^hyst fit: fitting gpi: \([0-9]*\)/\1 starts; ' gpi.txt ||
+    fail "fit gpi progress: $(cat gpi.txt)"
   expect_error 2 "--progress excludes --quiet" -- \
     "$HYST" fit pi --data data.csv --input v --output y --out m.json --progress --quiet
   if command -v script >/dev/null; then

@@ -368,6 +368,7 @@ void run(const FitOptions& options) {
   // The fitters and the preprocessing know the samples, not where they came from (constant data,
   // two samples, a resampling step asking for too many samples): name the data here.
   ProgressDisplay display("hyst fit", options.progress.mode());
+  request.progress = display.callback();
   auto outcome = [&] {
     try {
       return display.run(fmt::format("fitting {}", entry.name),

@@ -57,7 +57,7 @@ struct CompareOptions {
   //! resampled on an input grid.
   bool time_series = true;
   //! Told before each model's fit and at the end (task "models"); empty: nothing is told.
-  ProgressCallback progress;
+  ProgressCallback progress{};
 };
 
 //! One row of the comparison.

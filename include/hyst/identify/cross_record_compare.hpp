@@ -63,7 +63,7 @@ struct CrossRecordOptions {
   //! The records are time series (ARX joins the yardstick when the start is "continue").
   bool time_series = true;
   //! Told before each model's fits and at the end (task "models"); empty: nothing is told.
-  ProgressCallback progress;
+  ProgressCallback progress{};
 };
 
 //! The error of one model on one held-out record, fitted on `fitted_on`.

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <span>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/bouc_wen.hpp"
 
@@ -25,6 +26,8 @@ struct BoucWenFitOptions {
   std::size_t global_evaluations = 300;
   std::size_t screening_iterations = 10;
   std::size_t max_iterations = 100;
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
   double validate_fraction = 0.0;  //!< last part of the record held out, [0, 1)
 };
 

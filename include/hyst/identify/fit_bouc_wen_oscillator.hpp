@@ -28,6 +28,7 @@
 #include <span>
 #include <vector>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/bouc_wen_oscillator.hpp"
@@ -49,6 +50,8 @@ struct BoucWenOscillatorFitOptions {
   std::size_t global_evaluations = 300;
   std::size_t screening_iterations = 4;
   std::size_t max_iterations = 1000;
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
   double function_tolerance = 1e-9;
   //! Fraction of a single record, at its end, held out for validation; [0, 1).
   double validate_fraction = 0.0;

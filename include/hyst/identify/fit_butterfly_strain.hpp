@@ -39,6 +39,7 @@
 #include <string_view>
 
 #include "hyst/core/enum_names.hpp"
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/butterfly_strain.hpp"
@@ -76,7 +77,9 @@ struct ButterflyFitOptions {
   bool fit_field_term = true;  //!< fit d; false = d = 0
   ButterflyFitStart start = ButterflyFitStart::periodic;
   std::size_t max_iterations = 300;  //!< Levenberg-Marquardt iterations (direct form), >= 1
-  double validate_fraction = 0.0;    //!< one record: held out at its end, [0, 1)
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
+  double validate_fraction = 0.0;  //!< one record: held out at its end, [0, 1)
   //! Two stages: fit the leakage conductance g >= 0 of the measured polarisation with P(v)
   //! (hyst/data/leakage.hpp); the maps then see P without the leakage charge g Q.
   bool fit_leakage = false;

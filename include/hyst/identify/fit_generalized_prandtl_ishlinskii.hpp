@@ -58,6 +58,7 @@
 #include <vector>
 
 #include "hyst/core/enum_names.hpp"
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
@@ -104,6 +105,8 @@ struct GpiFitOptions {
   std::size_t screening_iterations = 15;
   //! Levenberg-Marquardt iterations of the best start after screening (>= 0).
   std::size_t max_iterations = 3000;
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
   //! Ceres' relative cost-decrease tolerance (> 0): stop when |d cost| / cost < it.
   double function_tolerance = 1e-9;
   //! Operating range for the ordering check of the fitted model [input units]; unset = the range

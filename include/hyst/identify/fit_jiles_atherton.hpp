@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/jiles_atherton.hpp"
@@ -50,6 +51,8 @@ struct JilesAthertonFitOptions {
   //! cost wins (the cost has several valleys, e.g. c near 0 and near 1 on the amorphous loop).
   std::size_t refined_starts = 3;
   std::size_t max_iterations = 2000;
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
   double function_tolerance = 1e-9;
   //! true: every loop is one period in steady state (file comment); false: every record starts
   //! from the demagnetised state at H = 0 (e.g. a first-magnetisation record).

@@ -41,6 +41,7 @@
 #include <span>
 #include <vector>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_report.hpp"
 #include "hyst/models/narx.hpp"
 
@@ -58,6 +59,8 @@ struct NarxFitOptions {
   //! free-run error on the early-stopping part (without one: the lowest final cost) is kept.
   std::size_t starts = 1;
   std::size_t max_iterations = 100;  //!< one-step LM iterations (>= 1)
+  //! Told before each start of the fit and its refinement (task "starts"); may be empty.
+  ProgressCallback progress{};
   //! LM iterations on the simulation (free-run) error after the one-step stage; 0: none.
   std::size_t simulation_iterations = 100;
   std::size_t patience = 15;             //!< early stopping (>= 1)

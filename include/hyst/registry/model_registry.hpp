@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hyst/core/progress.hpp"
 #include "hyst/data/preprocessing.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/identify/fit_report.hpp"
@@ -59,6 +60,8 @@ struct FitRequest {
   data::Preprocessing preprocessing;
   //! How a separate validation record is predicted (validation_rule.hpp).
   ValidationRule validation;
+  //! Told as a fitter with several starts runs them (task "starts"); the others never call it.
+  ProgressCallback progress{};
 };
 
 struct FitOutcome {

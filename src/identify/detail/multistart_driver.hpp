@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "hyst/core/progress.hpp"
+
 namespace hyst::detail {
 
 struct MultistartBudget {
@@ -28,6 +30,7 @@ struct MultistartBudget {
   std::size_t refined_starts = 1;         // screened runs that continue (at least 1)
   std::size_t max_iterations = 100;       // of each continuation (0: none)
   bool always_continue = false;           // continue runs that ended in the screening too
+  ProgressCallback progress{};  // told before each start and the continuation (task "starts")
 };
 
 template <class Run>
@@ -50,14 +53,27 @@ auto run_multistart(std::size_t starts, const MultistartBudget& budget, Solve&& 
   };
   MultistartRuns<Run> runs;
   std::vector<Screened> usable;
+  // The steps: every start, then the continuations (counted as one per refined start).
+  const std::size_t steps =
+      starts + (budget.screen ? std::max<std::size_t>(budget.refined_starts, 1) : 0);
+  std::size_t done = 0;
+  const auto tell = [&](const char* what) {
+    if (budget.progress) budget.progress({"starts", done, steps, what});
+  };
   for (std::size_t s = 0; s < starts; ++s) {
+    tell(budget.screen ? "screening" : "start");
+    ++done;
     Run run = solve(s, budget.screen ? budget.screening_iterations : budget.max_iterations);
     runs.iterations += run.iterations;
     if (run.usable && run.cost < std::numeric_limits<double>::infinity()) {
       usable.push_back({std::move(run), s});
     }
   }
-  if (usable.empty()) return runs;
+  if (usable.empty()) {
+    done = steps;
+    tell("");
+    return runs;
+  }
   std::stable_sort(usable.begin(), usable.end(),
                    [](const Screened& x, const Screened& y) { return x.run.cost < y.run.cost; });
   const std::size_t refined =
@@ -66,6 +82,8 @@ auto run_multistart(std::size_t starts, const MultistartBudget& budget, Solve&& 
     Run run = std::move(usable[i].run);
     std::size_t continued = 0;
     if (budget.screen && (budget.always_continue || (budget.max_iterations > 0 && !run.finished))) {
+      tell("refining");
+      ++done;
       run = continue_run(run, budget.max_iterations);
       continued = run.iterations;
       runs.iterations += continued;
@@ -79,6 +97,8 @@ auto run_multistart(std::size_t starts, const MultistartBudget& budget, Solve&& 
       runs.found = true;
     }
   }
+  done = steps;
+  tell("");
   return runs;
 }
 

@@ -44,6 +44,7 @@ struct MultistartOptions {
   std::size_t refined_starts = 1;  // the best this many after screening continue
   std::size_t max_iterations = 100;
   double function_tolerance = kFunctionTolerance;
+  ProgressCallback progress{};  // of the multistart driver (task "starts"); may be empty
 };
 
 template <std::size_t N>
@@ -154,6 +155,7 @@ MultistartOptions<N> multistart_options(const std::array<double, N>& lower,
   if constexpr (requires { options.function_tolerance; }) {
     engine.function_tolerance = options.function_tolerance;
   }
+  if constexpr (requires { options.progress; }) engine.progress = options.progress;
   return engine;
 }
 
@@ -229,7 +231,8 @@ MultistartResult<N> multistart_fit(const Screening& screening, const Functor& fu
       MultistartBudget{.screening_iterations = options.screening_iterations,
                        .refined_starts = options.refined_starts,
                        .max_iterations = options.max_iterations,
-                       .always_continue = always_refine},
+                       .always_continue = always_refine,
+                       .progress = options.progress},
       [&](std::size_t s, std::size_t iterations) {
         // A start whose cost is not finite is not solved from.
         if (!std::isfinite(start_costs[s])) return BoundedRun{};
