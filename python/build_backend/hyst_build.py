@@ -99,9 +99,15 @@ def _build_module(config_settings):
     # for /usr/bin/python3, the interpreter of a --system-site-packages venv too).
     commands = [] if (build / "CMakeCache.txt").exists() else [configure]
     commands.append(["cmake", "--build", str(build), "--target", "hyst_python_stubs", "-j", jobs])
+    # pip's isolated build environment hides the system's site-packages from every Python started
+    # with its PYTHONPATH (a sitecustomize there); the stub generator imports the module, which
+    # needs Debian's numpy, so the build runs without it.
+    environment = {key: value for key, value in os.environ.items()
+                   if key not in ("PYTHONPATH", "PYTHONNOUSERSITE")}
     # Progress to standard error: pip shows it with -v and keeps it out of its own output.
     for command in commands:
-        result = subprocess.run(command, stdout=sys.stderr, stderr=sys.stderr, check=False)
+        result = subprocess.run(command, stdout=sys.stderr, stderr=sys.stderr, check=False,
+                                env=environment)
         if result.returncode != 0:
             raise RuntimeError(f"hyst: '{' '.join(command)}' failed with exit status "
                                f"{result.returncode} (the CMake output above says why)")
