@@ -33,4 +33,19 @@ inline constexpr double kMaxDerivedSamples = 1e7;
 inline constexpr std::size_t kMaxForcCurves = 100000;
 inline constexpr std::size_t kMaxForcPoints = 10000000;
 
+//! Most values of one NumPy array (a .npy file or an .npz member): 33 554 432 (2^25), i.e.
+//! 256 MiB as doubles, the same as one MAT variable. Checked on the shape a header states,
+//! before anything is allocated. A .npy file is also bounded by kMaxInputBytes as a whole.
+inline constexpr std::size_t kMaxNumpyValues = std::size_t{1} << 25;
+
+//! Longest header of a .npy file: 10 000 bytes, the default limit of NumPy's own reader
+//! (numpy.load's max_header_size). Plain float arrays have headers of 118 to 246 bytes.
+inline constexpr std::size_t kMaxNpyHeaderBytes = 10000;
+
+//! Most bytes one .npz member may inflate to: the largest .npy file the two limits above allow
+//! (a preamble of 12 bytes, the longest header, kMaxNumpyValues float64 values), about 256 MiB.
+//! Checked against the size the archive claims before reading, and again while inflating.
+inline constexpr std::size_t kMaxNpzMemberBytes =
+    12 + kMaxNpyHeaderBytes + kMaxNumpyValues * sizeof(double);
+
 }  // namespace hyst::io::limits
