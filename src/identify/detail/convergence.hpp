@@ -19,6 +19,8 @@
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
+#include "hyst/identify/fit_report.hpp"
+
 namespace hyst::detail {
 
 // The relative cost decrease of one step below which Ceres reports convergence.
@@ -40,6 +42,21 @@ inline ceres::Solver::Options levenberg_marquardt_options(std::size_t iterations
   solver.minimizer_progress_to_stdout = false;
   solver.num_threads = 1;
   return solver;
+}
+
+// How a Ceres run ended, in hyst's words (StagnationStop's USER_SUCCESS is "converged").
+inline Termination termination_of_ceres(const ceres::Solver::Summary& summary) {
+  switch (summary.termination_type) {
+    case ceres::CONVERGENCE:
+    case ceres::USER_SUCCESS:
+      return Termination::converged;
+    case ceres::NO_CONVERGENCE:
+      return Termination::max_iterations;
+    case ceres::FAILURE:
+    case ceres::USER_FAILURE:
+      return Termination::failed;
+  }
+  return Termination::failed;
 }
 
 // Ends a run whose cost fell by less than kRelative (relative) over the last kWindow iterations;

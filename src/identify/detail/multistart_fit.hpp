@@ -60,20 +60,6 @@ struct MultistartResult {
   std::array<bool, N> at_bound{};  // free parameters within 1e-6 of a bound (held ones: false)
 };
 
-inline Termination termination_of_ceres(const ceres::Solver::Summary& summary) {
-  switch (summary.termination_type) {
-    case ceres::CONVERGENCE:
-    case ceres::USER_SUCCESS:
-      return Termination::converged;
-    case ceres::NO_CONVERGENCE:
-      return Termination::max_iterations;
-    case ceres::FAILURE:
-    case ceres::USER_FAILURE:
-      return Termination::failed;
-  }
-  return Termination::failed;
-}
-
 inline bool all_finite(double x) {
   return std::isfinite(x);
 }
