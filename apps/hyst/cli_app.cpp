@@ -66,6 +66,8 @@ int parse_and_run(int argc, const char* const* argv) {
   hyst plot --data d.csv --x v --y y --kind loop --model m.json --out loop.png
   hyst info m.json
   hyst data info RMN_TRAP_SLOW.dat              tables, columns, units, reversals, cycles
+  hyst fit-system --order 28 --sample-time 1.5625e-4 --input-npy u.npy --output-npy y.npy --out s.json
+  hyst evaluate --model s.json --input-npy u_test.npy --output-npy y_test.npy --periodic
 Run 'hyst <command> --help' for the options of a command.
 Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: error: ...' on stderr.)");
 
@@ -79,6 +81,8 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   add_data_command(app);
   add_export_command(app);
   add_compare_command(app);
+  add_fit_system_command(app);
+  add_evaluate_command(app);
 
   try {
     app.parse(argc, argv);

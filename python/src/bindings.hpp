@@ -58,6 +58,7 @@ void bind_signals(py::module_& module);
 void bind_io(py::module_& module);
 void bind_identify(py::module_& module);
 void bind_registry(py::module_& module);
+void bind_dynamics(py::module_& module);
 void bind_actuator(py::module_& module);
 void bind_data(py::module_& module);
 void bind_compare(py::module_& module);

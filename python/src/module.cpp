@@ -242,4 +242,5 @@ PYBIND11_MODULE(_core, module) {
   hyst::python::bind_magnetometer_files(module);
   hyst::python::bind_forc(module);
   hyst::python::bind_butterfly(module);
+  hyst::python::bind_dynamics(module);
 }

@@ -263,6 +263,64 @@ case_every_model() {
   done
 }
 
+# A periodic record of x[k+1] = 0.8 x[k] + u[k], y = x: 2 periods of 64 samples of a
+# Schroeder multisine (lines 1..10) after 20 periods from rest, as CSV (u, y).
+write_first_order_periodic() {
+  awk 'BEGIN {
+    pi = atan2(0, -1); n = 64; x = 0; print "u,y"
+    for (p = 0; p < 22; p++) for (k = 0; k < n; k++) {
+      u = 0; for (l = 1; l <= 10; l++) u += cos(2 * pi * l * k / n - pi * l * (l - 1) / 10)
+      if (p >= 20) printf "%.17g,%.17g\n", u, x
+      x = 0.8 * x + u
+    } }' >"$1"
+}
+
+case_fit_system_evaluate() {
+  write_first_order_periodic lag.csv
+  expect_ok "$HYST" fit-system --data lag.csv --input u --output y --samples-per-period 64 \
+    --sample-time 0.01 --order 1 --out lag.json
+  expect_stdout "10 excited lines" "1 blocks of 1 realisations, 2 periods" "wrote lag.json"
+  # The model is the system (awk's recursion above): it scores 0 in periodic steady state.
+  expect_ok "$HYST" evaluate --model lag.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --periodic --json
+  awk '/"mean_relative_error"/ { gsub(/[",]/, "", $2); if ($2 + 0 > 1e-9) bad = 1; seen = 1 }
+       END { exit !(seen && !bad) }' "$WORK/stdout" ||
+    fail "periodic score of the true model is not 0: $(cat "$WORK/stdout")"
+  # From rest the transient costs: the first period's error is not 0.
+  expect_ok "$HYST" evaluate --model lag.json --data lag.csv --input u --output y \
+    --samples-per-period 64
+  expect_stdout "start: rest, first 0 samples" "mean"
+
+  # The Fine Steering Mirror's committed linear model on the 200 mV test set beats the published
+  # one-model-for-all-levels linear baseline (6.61 %).
+  if [ -n "$HYST_SHARED_DATA_DIR" ] && [ -d "$HYST_SHARED_DATA_DIR/fsm_piezo_mimo_multisine" ]; then
+    local fsm="$HYST_SHARED_DATA_DIR/fsm_piezo_mimo_multisine"
+    expect_ok "$HYST" evaluate --model "$HYST_EXAMPLE_CONFIG_DIR/../models/fsm_linear_state_space.json" \
+      --input-npy "$fsm/u_200mV_test.npy" --output-npy "$fsm/y_200mV_test.npy" \
+      --layout N,channel,realisation,period --periodic
+    expect_stdout "28 states, 3 inputs, 3 outputs" "3 realisations x 2 periods x 8192 samples"
+    awk '$1 == "mean" { if ($3 + 0 >= 6.61 || $3 + 0 <= 0) exit 1; seen = 1 } END { exit !seen }' \
+      "$WORK/stdout" || fail "FSM linear model does not beat 6.61 %: $(cat "$WORK/stdout")"
+    expect_error 1 "--input-npy: " "layout" -- "$HYST" evaluate --model lag.json \
+      --input-npy "$fsm/u_200mV_test.npy" --output-npy "$fsm/y_200mV_test.npy" --layout N,channel
+  fi
+
+  write_pi_model pi.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  expect_error 1 "pi.json: model 'pi' is not a dynamic multi-input model" -- \
+    "$HYST" evaluate --model pi.json --data lag.csv --input u --output y
+  expect_error 1 "1 --input-npy but 0 --output-npy" -- \
+    "$HYST" fit-system --input-npy a.npy --sample-time 1 --out x.json
+  expect_error 1 "lag.csv --input 'u': 128 samples are not a whole number of periods of 60" -- \
+    "$HYST" fit-system --data lag.csv --input u --output y --samples-per-period 60 \
+    --sample-time 1 --out x.json
+  expect_error 1 "--model 'hammer': the dynamic models are: state_space" -- \
+    "$HYST" fit-system --model hammer --data lag.csv --input u --output y --sample-time 1 \
+    --out x.json
+  expect_error 1 "order 0 must be in 1.." -- "$HYST" fit-system --data lag.csv --input u \
+    --output y --samples-per-period 64 --sample-time 1 --order 0 --out x.json
+  [ ! -e x.json ] || fail "a failed fit wrote x.json"
+}
+
 case_progress() {
   # Progress goes to standard error: in a pipe only with --progress (one line per step); on a
   # terminal (a pseudo-terminal from script(1)) redrawn in place, and never with --quiet.

@@ -1,0 +1,246 @@
+// Linear dynamics: the MIMO state-space model, the best linear approximation of periodic
+// experiments, the state-space fit and the benchmark score. Signals are numpy arrays: a record is
+// (samples, channels); periodic data are (N, channel, realisation, period) unless a layout says
+// otherwise (hyst::io::arrange_periodic).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+
+#include "bindings.hpp"
+#include "hyst/core/error.hpp"
+#include "hyst/dynamics/best_linear_approximation.hpp"
+#include "hyst/dynamics/fit_state_space.hpp"
+#include "hyst/dynamics/simulation_score.hpp"
+#include "hyst/dynamics/state_space.hpp"
+#include "hyst/io/numpy_file.hpp"
+#include "hyst/registry/state_space_file.hpp"
+
+namespace hyst::python {
+namespace {
+
+constexpr const char* kDefaultLayout = "N,channel,realisation,period";
+
+using AnyArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+//! A numpy array of any dimension as periodic signals, its axes named by `layout`.
+PeriodicSignals periodic_signals(const AnyArray& array, const std::string& layout,
+                                 const std::string& name) {
+  io::NumpyArray values;
+  for (py::ssize_t d = 0; d < array.ndim(); ++d)
+    values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
+  values.values.assign(array.data(), array.data() + array.size());
+  // The layout names as many axes as the array has: its first ones.
+  std::string used;
+  std::size_t axes = 0;
+  for (std::size_t start = 0; start <= layout.size() && axes < values.shape.size(); ++axes) {
+    const std::size_t comma = std::min(layout.find(',', start), layout.size());
+    used += (used.empty() ? "" : ",") + layout.substr(start, comma - start);
+    start = comma + 1;
+  }
+  return io::arrange_periodic(values, used, name);
+}
+
+std::vector<PeriodicExperiment> experiments_of(const py::sequence& pairs,
+                                               const std::string& layout) {
+  std::vector<PeriodicExperiment> experiments;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto pair = pairs[i].cast<py::sequence>();
+    if (pair.size() != 2)
+      throw Error(fmt::format("experiments[{}]: expected an (input, output) pair", i));
+    experiments.push_back({periodic_signals(pair[0].cast<AnyArray>(), layout,
+                                            fmt::format("experiments[{}] input", i)),
+                           periodic_signals(pair[1].cast<AnyArray>(), layout,
+                                            fmt::format("experiments[{}] output", i))});
+  }
+  return experiments;
+}
+
+//! Per-frequency matrices as one (F, rows, cols) array.
+template <class Matrix>
+py::array stack(const std::vector<Matrix>& matrices) {
+  using Scalar = typename Matrix::Scalar;
+  const auto rows = matrices.empty() ? 0 : matrices[0].rows();
+  const auto cols = matrices.empty() ? 0 : matrices[0].cols();
+  py::array_t<Scalar> out({py::ssize_t(matrices.size()), py::ssize_t(rows), py::ssize_t(cols)});
+  auto view = out.template mutable_unchecked<3>();
+  for (std::size_t f = 0; f < matrices.size(); ++f)
+    for (Eigen::Index i = 0; i < rows; ++i)
+      for (Eigen::Index j = 0; j < cols; ++j)
+        view(py::ssize_t(f), i, j) = matrices[f](i, j);
+  return out;
+}
+
+py::object stack_or_none(const std::vector<Eigen::MatrixXd>& matrices) {
+  return matrices.empty() ? py::object(py::none()) : py::object(stack(matrices));
+}
+
+py::dict score_dict(const SimulationScore& score) {
+  std::vector<double> rmse, relative, deviation;
+  for (const auto& c : score.channels) {
+    rmse.push_back(c.rmse);
+    relative.push_back(c.relative_error);
+    deviation.push_back(c.output_std);
+  }
+  py::dict out;
+  out["rmse"] = to_array(std::move(rmse));
+  out["relative_error"] = to_array(std::move(relative));
+  out["output_std"] = to_array(std::move(deviation));
+  out["mean_rmse"] = score.mean_rmse;
+  out["mean_relative_error"] = score.mean_relative_error;
+  out["scored_samples"] = score.scored_samples;
+  return out;
+}
+
+}  // namespace
+
+void bind_dynamics(py::module_& module) {
+  py::class_<StateSpace>(module, "StateSpace",
+                         "Discrete-time MIMO linear state-space model x[k+1] = A x[k] + B u[k], "
+                         "y[k] = C x[k] + D u[k] at sample time Ts. Records are (samples, "
+                         "channels) arrays.")
+      .def(py::init([](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, const Eigen::MatrixXd& c,
+                       const Eigen::MatrixXd& d, double sample_time) {
+             return StateSpace(StateSpace::Params{a, b, c, d, sample_time});
+           }),
+           "a"_a, "b"_a, "c"_a, "d"_a, "sample_time"_a = 1.0)
+      .def_static("from_continuous", &StateSpace::from_continuous, "a"_a, "b"_a, "c"_a, "d"_a,
+                  "sample_time"_a,
+                  "Exact zero-order-hold discretisation of dx/dt = a x + b u, y = c x + d u.")
+      .def_property_readonly("a", [](const StateSpace& m) { return m.params().a; })
+      .def_property_readonly("b", [](const StateSpace& m) { return m.params().b; })
+      .def_property_readonly("c", [](const StateSpace& m) { return m.params().c; })
+      .def_property_readonly("d", [](const StateSpace& m) { return m.params().d; })
+      .def_property_readonly("sample_time", &StateSpace::sample_time, "Ts [s]")
+      .def_property_readonly("order", &StateSpace::order, "Number of states n")
+      .def_property_readonly("inputs", &StateSpace::inputs, "Number of inputs m")
+      .def_property_readonly("outputs", &StateSpace::outputs, "Number of outputs p")
+      .def(
+          "simulate",
+          [](const StateSpace& m, const Eigen::MatrixXd& input,
+             const std::optional<Eigen::VectorXd>& initial_state) {
+            auto state = initial_state ? m.make_state(*initial_state) : m.initial_state();
+            py::gil_scoped_release release;
+            return m.simulate(input, state);
+          },
+          "input"_a, "initial_state"_a = py::none(),
+          "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`.")
+      .def("periodic_state", &StateSpace::periodic_state, "one_period"_a,
+           "The state one period of the periodic input (N, m) returns to.")
+      .def("simulate_periodic", &StateSpace::simulate_periodic, "one_period"_a,
+           "Outputs (N, p) over one period in periodic steady state.")
+      .def(
+          "frequency_response",
+          [](const StateSpace& m, const InputArray& frequencies) {
+            return stack(m.frequency_response(as_span(frequencies, "frequencies")));
+          },
+          "frequencies"_a, "G(exp(j 2 pi f Ts)) as a complex (F, p, m) array; f in Hz.")
+      .def("poles", &StateSpace::poles, "Eigenvalues of A (complex).")
+      .def("spectral_radius", &StateSpace::spectral_radius, "Largest pole magnitude.")
+      .def("is_stable", &StateSpace::is_stable, "Every pole strictly inside the unit circle.")
+      .def(
+          "save",
+          [](const StateSpace& m, const std::filesystem::path& path, const py::object& info) {
+            save_state_space(
+                path, m, std::nullopt,
+                info.is_none() ? nlohmann::json::object() : python_to_json(info, "info"));
+          },
+          "path"_a, "info"_a = py::none(), "Writes the model file (JSON) atomically.")
+      .def("__repr__", [](const StateSpace& m) {
+        return fmt::format("<StateSpace: {} states, {} inputs, {} outputs, Ts = {:g} s>", m.order(),
+                           m.inputs(), m.outputs(), m.sample_time());
+      });
+  module.def(
+      "load_state_space",
+      [](const std::filesystem::path& path) { return load_state_space(path).model; }, "path"_a,
+      "A state-space model from its model file.");
+
+  py::class_<BestLinearApproximation>(
+      module, "BestLinearApproximation",
+      "Frequency response of the best linear approximation at the excited lines, with its noise "
+      "and total (noise and nonlinear distortion) variances.")
+      .def_readonly("sample_time", &BestLinearApproximation::sample_time, "Ts [s]")
+      .def_readonly("samples", &BestLinearApproximation::samples, "N per period")
+      .def_readonly("lines", &BestLinearApproximation::lines, "Excited DFT lines")
+      .def_readonly("blocks", &BestLinearApproximation::blocks, "Blocks of m realisations")
+      .def_readonly("periods", &BestLinearApproximation::periods, "Periods per block")
+      .def_property_readonly(
+          "frequencies", [](const BestLinearApproximation& b) { return to_array(b.frequencies()); },
+          "Frequencies of the lines [Hz]")
+      .def_property_readonly(
+          "response", [](const BestLinearApproximation& b) { return stack(b.response); },
+          "Complex (F, p, m) array")
+      .def_property_readonly(
+          "noise_variance",
+          [](const BestLinearApproximation& b) { return stack_or_none(b.noise_variance); },
+          "(F, p, m) variances from the noise, or None with one period")
+      .def_property_readonly(
+          "total_variance",
+          [](const BestLinearApproximation& b) { return stack_or_none(b.total_variance); },
+          "(F, p, m) variances from noise and distortions, or None with one block")
+      .def("__repr__", [](const BestLinearApproximation& b) {
+        return fmt::format("<BestLinearApproximation: {} lines, {} outputs x {} inputs, {} blocks>",
+                           b.lines.size(), b.outputs(), b.inputs(), b.blocks);
+      });
+  module.def(
+      "estimate_bla",
+      [](const py::sequence& experiments, double sample_time, const std::string& layout,
+         double excitation_threshold, std::size_t transient_periods) {
+        const auto data = experiments_of(experiments, layout);
+        py::gil_scoped_release release;
+        return estimate_bla(data, sample_time, {excitation_threshold, transient_periods});
+      },
+      "experiments"_a, "sample_time"_a, "layout"_a = kDefaultLayout,
+      "excitation_threshold"_a = BlaOptions{}.excitation_threshold, "transient_periods"_a = 0,
+      "The best linear approximation of periodic experiments, a sequence of (input, output) "
+      "arrays whose axes `layout` names (axes beyond the array's are left out).");
+
+  module.def(
+      "fit_state_space",
+      [](const BestLinearApproximation& bla, std::size_t order, const std::string& weighting,
+         std::size_t max_iterations, std::size_t subspace_block_rows, double max_pole_radius,
+         const py::object& progress) {
+        StateSpaceFitOptions options;
+        options.order = order;
+        options.weighting = bla_weighting_from_string(weighting);
+        options.max_iterations = max_iterations;
+        options.subspace_block_rows = subspace_block_rows;
+        options.max_pole_radius = max_pole_radius;
+        options.progress = progress_callback(progress);
+        auto fit = [&] {
+          py::gil_scoped_release release;
+          return fit_state_space(bla, options);
+        }();
+        return py::make_tuple(std::move(fit.model), std::move(fit.report));
+      },
+      "bla"_a, "order"_a, "weighting"_a = "none", "max_iterations"_a = 200,
+      "subspace_block_rows"_a = 0, "max_pole_radius"_a = StateSpaceFitOptions{}.max_pole_radius,
+      "progress"_a = py::none(),
+      "A state-space model of `order` states fitted to a BLA (frequency-domain subspace, then "
+      "Levenberg-Marquardt); returns (StateSpace, FitReport). weighting: none, total_variance or "
+      "noise_variance.");
+
+  module.def(
+      "evaluate",
+      [](const StateSpace& model, const AnyArray& input, const AnyArray& output,
+         const std::string& layout, bool periodic, std::size_t transient) {
+        const auto u = periodic_signals(input, layout, "input");
+        const auto y = periodic_signals(output, layout, "output");
+        const auto score = [&] {
+          py::gil_scoped_release release;
+          return score_state_space(model, u, y, {periodic, transient});
+        }();
+        return score_dict(score);
+      },
+      "model"_a, "input"_a, "output"_a, "layout"_a = kDefaultLayout, "periodic"_a = false,
+      "transient"_a = 0,
+      "The benchmark score of a model on periodic test data: per output channel the RMSE of the "
+      "free-run simulation averaged over realisations and periods, relative to the channel's "
+      "standard deviation, and their means (a dict of numpy arrays and numbers).");
+}
+
+}  // namespace hyst::python

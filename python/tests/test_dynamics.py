@@ -1,0 +1,158 @@
+"""Linear dynamics from Python: the state-space model against closed forms, the BLA and the
+state-space fit of a system simulated here with numpy, and the benchmark score against a numpy
+computation of its definition on the Fine Steering Mirror data."""
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hyst
+
+REPOSITORY = Path(__file__).resolve().parents[2]
+FSM_MODEL = REPOSITORY / "examples" / "models" / "fsm_linear_state_space.json"
+
+
+def first_order(a=0.8, b=0.5, c=2.0, d=0.1):
+    return hyst.StateSpace([[a]], [[b]], [[c]], [[d]], sample_time=0.01)
+
+
+def test_state_space_simulates_and_answers_in_closed_form():
+    model = first_order()
+    assert (model.order, model.inputs, model.outputs, model.sample_time) == (1, 1, 1, 0.01)
+    assert "1 states" in repr(model)
+    u = np.ones((5, 1))
+    y = model.simulate(u)
+    # y[k] = c x[k] + d, x[k] = b (1 - a^k) / (1 - a)
+    expected = [2.0 * 0.5 * (1 - 0.8 ** k) / 0.2 + 0.1 for k in range(5)]
+    np.testing.assert_allclose(y[:, 0], expected, rtol=1e-14)
+    np.testing.assert_allclose(model.simulate(u, initial_state=np.array([1.0]))[0, 0], 2.1)
+    f = np.array([1.0, 10.0])
+    z = np.exp(2j * np.pi * f * 0.01)
+    np.testing.assert_allclose(model.frequency_response(f)[:, 0, 0], 2.0 * 0.5 / (z - 0.8) + 0.1,
+                               rtol=1e-12)
+    np.testing.assert_allclose(model.poles(), [0.8])
+    assert model.spectral_radius() == pytest.approx(0.8)
+    assert model.is_stable()
+    np.testing.assert_array_equal(model.a, [[0.8]])
+    np.testing.assert_array_equal(model.b, [[0.5]])
+    np.testing.assert_array_equal(model.c, [[2.0]])
+    np.testing.assert_array_equal(model.d, [[0.1]])
+
+
+def test_zero_order_hold_and_periodic_steady_state():
+    # dx/dt = -2 x + u: A = exp(-2 Ts), B = (1 - exp(-2 Ts)) / 2
+    model = hyst.StateSpace.from_continuous([[-2.0]], [[1.0]], [[1.0]], [[0.0]], sample_time=0.1)
+    assert model.a[0, 0] == pytest.approx(math.exp(-0.2), rel=1e-14)
+    assert model.b[0, 0] == pytest.approx((1 - math.exp(-0.2)) / 2, rel=1e-14)
+    period = np.sin(2 * np.pi * np.arange(16) / 16)[:, None]
+    x0 = model.periodic_state(period)
+    # one period from x0 returns to x0: the last output and the next state agree
+    y = model.simulate(np.vstack([period, period]), initial_state=x0)
+    np.testing.assert_allclose(y[:16], y[16:], atol=1e-14)
+    np.testing.assert_allclose(model.simulate_periodic(period), y[:16], atol=1e-14)
+
+
+def two_lag_experiment(realisations=4, periods=2, samples=128, seed=1):
+    """Inputs and outputs (N, channel, realisation, period) of two coupled lags, simulated with
+    numpy in periodic steady state (10 periods to settle)."""
+    rng = np.random.default_rng(seed)
+    a = np.diag([0.9, -0.5])
+    b = np.array([[1.0, 0.0], [1.0, 1.0]])
+    c = np.eye(2)
+    d = np.array([[0.0, 0.5], [0.0, 0.0]])
+    n = np.arange(samples)
+    u = np.zeros((samples, 2, realisations, periods))
+    y = np.zeros_like(u)
+    for r in range(realisations):
+        phases = rng.uniform(0, 2 * np.pi, (2, 30))
+        one = np.stack([np.cos(2 * np.pi * np.outer(n, np.arange(1, 31)) / samples + phases[ch])
+                        .sum(axis=1) for ch in range(2)], axis=1)
+        x = np.zeros(2)
+        for p in range(10 + periods):
+            for k in range(samples):
+                out = c @ x + d @ one[k]
+                x = a @ x + b @ one[k]
+                if p >= 10:
+                    u[k, :, r, p - 10] = one[k]
+                    y[k, :, r, p - 10] = out
+    return u, y, hyst.StateSpace(a, b, c, d)
+
+
+def test_bla_and_fit_recover_a_system_simulated_with_numpy():
+    u, y, truth = two_lag_experiment()
+    bla = hyst.estimate_bla([(u, y)], sample_time=1.0)
+    assert bla.lines == list(range(1, 31))
+    assert (bla.blocks, bla.periods, bla.samples, bla.sample_time) == (2, 2, 128, 1.0)
+    np.testing.assert_allclose(bla.frequencies, np.arange(1, 31) / 128)
+    assert bla.response.shape == (30, 2, 2)
+    assert bla.noise_variance.shape == (30, 2, 2) and bla.total_variance.shape == (30, 2, 2)
+    assert isinstance(bla, hyst.BestLinearApproximation) and "30 lines" in repr(bla)
+    np.testing.assert_allclose(bla.response, truth.frequency_response(bla.frequencies),
+                               atol=1e-10)
+    seen = []
+    result = hyst.fit_state_space(bla, order=2, weighting="none",
+                                  progress=lambda done, total, step: seen.append(step))
+    assert result.report.model == "state_space" and seen
+    np.testing.assert_allclose(np.sort_complex(result.model.poles()), [-0.5, 0.9], atol=1e-8)
+    score = hyst.evaluate(result.model, u, y, periodic=True)
+    assert score["mean_relative_error"] < 1e-8
+    assert score["rmse"].shape == (2,) and score["scored_samples"] == 4 * 2 * 128
+    assert score["relative_error"].shape == score["output_std"].shape == (2,)
+    assert score["mean_rmse"] < 1e-8
+    from_rest = hyst.evaluate(result.model, u, y, transient=0)
+    assert from_rest["mean_relative_error"] > 1e-4
+    with pytest.raises(hyst.Error, match="weighting"):
+        hyst.fit_state_space(bla, order=2, weighting="heavy")
+    with pytest.raises(hyst.Error, match="not a whole number of blocks of 2"):
+        hyst.estimate_bla([(u[:, :, :1], y[:, :, :1])], sample_time=1.0)
+
+
+def test_model_files_round_trip(tmp_path):
+    model = first_order()
+    model.save(tmp_path / "m.json", info={"made by": "test"})
+    again = hyst.load_state_space(tmp_path / "m.json")
+    np.testing.assert_array_equal(again.a, model.a)
+    assert json.loads((tmp_path / "m.json").read_text())["info"] == {"made by": "test"}
+
+
+def benchmark_score(model_file, u, y):
+    """The FSM benchmark's relative error by its definition (PROVENANCE.md), with numpy: periodic
+    steady state from the first period's input, free run over both periods."""
+    params = json.loads(model_file.read_text())["params"]
+    a, b, c, d = (np.array(params[k], dtype=float) for k in "abcd")
+    samples, _, realisations, periods = u.shape
+    rmse = np.zeros(y.shape[1])
+    for r in range(realisations):
+        record = np.concatenate([u[:, :, r, p] for p in range(periods)])
+        # x0 = (I - A^N)^-1 sum_k A^(N-1-k) B u[k]
+        forced = np.zeros(a.shape[0])
+        for k in range(samples):
+            forced = a @ forced + b @ record[k]
+        x = np.linalg.solve(np.eye(a.shape[0]) - np.linalg.matrix_power(a, samples), forced)
+        out = np.zeros((len(record), y.shape[1]))
+        for k in range(len(record)):
+            out[k] = c @ x + d @ record[k]
+            x = a @ x + b @ record[k]
+        for p in range(periods):
+            e = y[:, :, r, p] - out[p * samples:(p + 1) * samples]
+            rmse += np.sqrt((e ** 2).mean(axis=0)) / (realisations * periods)
+    relative = rmse / y.std(axis=(0, 2, 3))
+    return rmse, relative
+
+
+def test_benchmark_score_on_the_fine_steering_mirror_matches_its_definition(data_dir):
+    folder = data_dir / "fsm_piezo_mimo_multisine"
+    u = np.load(folder / "u_200mV_test.npy")
+    y = np.load(folder / "y_200mV_test.npy")
+    model = hyst.load_state_space(FSM_MODEL)
+    assert (model.order, model.inputs, model.outputs) == (28, 3, 3)
+    score = hyst.evaluate(model, u, y, periodic=True)
+    rmse, relative = benchmark_score(FSM_MODEL, u, y)
+    np.testing.assert_allclose(score["rmse"], rmse, rtol=1e-9)
+    np.testing.assert_allclose(score["relative_error"], relative, rtol=1e-9)
+    assert score["mean_relative_error"] == pytest.approx(relative.mean(), rel=1e-9)
+    # the published one-model-for-all-levels linear baseline scores 6.61 % here
+    assert score["mean_relative_error"] < 0.0661
