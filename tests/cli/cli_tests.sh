@@ -290,6 +290,9 @@ case_fit_system_evaluate() {
   expect_ok "$HYST" evaluate --model lag.json --data lag.csv --input u --output y \
     --samples-per-period 64
   expect_stdout "start: rest, first 0 samples" "mean"
+  expect_ok "$HYST" info lag.json
+  expect_stdout "1 states, 1 inputs, 1 outputs" "sample time: 0.01 s" "largest magnitude 0.8 (stable)" \
+    "training_scores"
 
   # The Fine Steering Mirror's committed linear model on the 200 mV test set beats the published
   # one-model-for-all-levels linear baseline (6.61 %).

@@ -7,7 +7,6 @@
 #include "hyst/dynamics/state_space.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -22,51 +21,12 @@
 #include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
 
-// The project's allocation counter replaces operator new, but Eigen allocates with std::malloc,
-// which that counter does not see. So this program counts malloc too: the executable's own
-// malloc comes first for every object linked into it (the static hyst libraries included) and
-// passes on to glibc's __libc_malloc, whose blocks glibc's free() takes back as usual.
-// AddressSanitizer brings its own malloc; under it, only operator new is counted.
-#if defined(__SANITIZE_ADDRESS__)
-#define HYST_TEST_COUNTS_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HYST_TEST_COUNTS_MALLOC 0
-#endif
-#endif
-#if !defined(HYST_TEST_COUNTS_MALLOC) && defined(__GLIBC__)
-#define HYST_TEST_COUNTS_MALLOC 1
-#endif
-#if !defined(HYST_TEST_COUNTS_MALLOC)
-#define HYST_TEST_COUNTS_MALLOC 0
-#endif
-
-#if HYST_TEST_COUNTS_MALLOC
-namespace {
-std::atomic<long> malloc_calls{0};
-}
-extern "C" void* __libc_malloc(std::size_t size) noexcept;
-extern "C" void* malloc(std::size_t size) noexcept {
-  malloc_calls.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-#endif
-
 namespace hyst::state_space_test {
 namespace {
 
 using Complex = std::complex<double>;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-// operator new and (where counted) malloc calls so far.
-long heap_allocations() {
-#if HYST_TEST_COUNTS_MALLOC
-  return test::allocation_count() + malloc_calls.load();
-#else
-  return test::allocation_count();
-#endif
-}
 
 MatrixXd random_matrix(Eigen::Index rows, Eigen::Index cols, std::mt19937_64& random) {
   std::normal_distribution<double> gauss;
@@ -437,9 +397,9 @@ TEST(StateSpacePoles, StabilityAndSpectralRadius) {
 TEST(StateSpaceStep, CounterSeesEigenAllocations) {
   const auto model = two_state_example();
   const MatrixXd u = MatrixXd::Ones(3, 2);
-  const long before = heap_allocations();
+  const long before = test::allocation_count();
   const MatrixXd y = model.simulate(u);  // its result, at least, is on the heap
-  EXPECT_GE(heap_allocations() - before, HYST_TEST_COUNTS_MALLOC ? 1 : 0);
+  EXPECT_GE(test::allocation_count() - before, test::counts_malloc() ? 1 : 0);
   EXPECT_EQ(y.rows(), 3);
 }
 
@@ -451,10 +411,10 @@ TEST(StateSpaceStep, DoesNotAllocateAndEqualsSimulate) {
   const MatrixXd u_by_sample = u.transpose();
   MatrixXd y(3, u.rows());
   auto state = model.initial_state();
-  const long before = heap_allocations();
+  const long before = test::allocation_count();
   for (Eigen::Index k = 0; k < u.rows(); ++k)
     model.step(state, {u_by_sample.col(k).data(), 3}, {y.col(k).data(), 3});
-  EXPECT_EQ(heap_allocations() - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_EQ(y.transpose(), expected);
 }
 

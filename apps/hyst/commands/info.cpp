@@ -11,6 +11,7 @@
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
 #include "hyst/registry/model_file.hpp"
+#include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -20,10 +21,40 @@ struct InfoOptions {
   bool json = false;
 };
 
+//! A linear state-space model file (hyst/registry/state_space_file.hpp): sizes, poles, stability.
+void show_state_space(const InfoOptions& options, const nlohmann::json& document) {
+  const auto file = state_space_from_json(document, options.file);
+  const auto& model = file.model;
+  const auto info = document.contains("info") ? document.at("info") : nlohmann::json();
+  if (options.json) {
+    nlohmann::json out = {{"file", options.file},
+                          {"model", "state_space"},
+                          {"order", model.order()},
+                          {"inputs", model.inputs()},
+                          {"outputs", model.outputs()},
+                          {"sample_time", model.sample_time()},
+                          {"spectral_radius", model.spectral_radius()},
+                          {"stable", model.is_stable()}};
+    if (!info.is_null()) out["info"] = info;
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("file:        {}\n", options.file);
+  fmt::print("model:       state_space (linear, discrete time)\n");
+  fmt::print("size:        {} states, {} inputs, {} outputs\n", model.order(), model.inputs(),
+             model.outputs());
+  fmt::print("sample time: {:g} s\n", model.sample_time());
+  fmt::print("poles:       largest magnitude {:.6g} ({})\n", model.spectral_radius(),
+             model.is_stable() ? "stable" : "not stable");
+  if (!info.is_null()) fmt::print("\ninfo (how the file was made):\n{}\n", info.dump(2));
+}
+
 void run(const InfoOptions& options) {
+  const auto document = io::parse_json_text(io::read_file(options.file), options.file);
+  if (document.is_object() && document.contains("model") && document.at("model") == "state_space")
+    return show_state_space(options, document);
   const auto model = load_model(options.file);
   // The "info" object is not part of the model; load_model() checked it is an object if present.
-  const auto document = io::parse_json_text(io::read_file(options.file), options.file);
   const auto info = document.contains("info") ? document.at("info") : nlohmann::json();
 
   if (options.json) {
@@ -57,7 +88,8 @@ void add_info_command(CLI::App& app) {
   command->footer(R"(Example:
   hyst info m.json
       the model and its parameters, its state, whether it has an inverse, and the
-      "info" object (for files written by 'hyst fit': the fit report).)");
+      "info" object (for files written by 'hyst fit': the fit report). A state-space
+      file (from 'hyst fit-system') shows its size, sample time and stability.)");
   command->callback([options] { run(*options); });
 }
 
