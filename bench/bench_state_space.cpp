@@ -1,5 +1,6 @@
 // ns/sample of the linear state-space model's step for a 28th-order model with 3 inputs and
-// 3 outputs (a piezo stage's lightly damped modes, identified from a MIMO measurement). Items
+// 3 outputs (a piezo stage's lightly damped modes, identified from a MIMO measurement), and of
+// the hysteretic LFR that adds a 16-operator PI model in each of 3 feedback channels. Items
 // processed = samples.
 
 #include <cstdint>
@@ -7,7 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include "hyst/dynamics/hysteretic_lfr.hpp"
 #include "hyst/dynamics/state_space.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
 
 namespace {
 
@@ -26,7 +29,7 @@ Eigen::MatrixXd random_matrix(Eigen::Index rows, Eigen::Index cols, std::mt19937
 
 // A stable model with a dense A: damped 2x2 rotations on the diagonal (poles r e^(+-j theta),
 // r in [0.9, 0.999]), then a random orthogonal similarity, which keeps the poles.
-hyst::StateSpace make_model() {
+hyst::StateSpace make_model(Eigen::Index inputs = kChannels, Eigen::Index outputs = kChannels) {
   std::mt19937_64 random(1);
   std::uniform_real_distribution<double> radius(0.9, 0.999);
   std::uniform_real_distribution<double> angle(0.05, 3.0);
@@ -37,13 +40,14 @@ hyst::StateSpace make_model() {
     blocks.block(i, i, 2, 2) << r * std::cos(t), -r * std::sin(t), r * std::sin(t), r * std::cos(t);
   }
   const Eigen::MatrixXd q = random_matrix(kOrder, kOrder, random).householderQr().householderQ();
-  return hyst::StateSpace({q * blocks * q.transpose(), random_matrix(kOrder, kChannels, random),
-                           random_matrix(kChannels, kOrder, random),
-                           random_matrix(kChannels, kChannels, random), 1e-4});
+  return hyst::StateSpace({q * blocks * q.transpose(), random_matrix(kOrder, inputs, random),
+                           random_matrix(outputs, kOrder, random),
+                           random_matrix(outputs, inputs, random), 1e-4});
 }
 
-void BM_StateSpaceStep(benchmark::State& bench) {
-  const auto model = make_model();
+// Steps a model with 3 inputs and 3 outputs through kSamples random samples per iteration.
+template <class Model>
+void run_steps(const Model& model, benchmark::State& bench) {
   auto state = model.initial_state();
   std::mt19937_64 random(2);
   const Eigen::MatrixXd input = random_matrix(kChannels, Eigen::Index(kSamples), random);
@@ -57,6 +61,31 @@ void BM_StateSpaceStep(benchmark::State& bench) {
   bench.SetItemsProcessed(static_cast<std::int64_t>(bench.iterations() * kSamples));
 }
 
+void BM_StateSpaceStep(benchmark::State& bench) {
+  run_steps(make_model(), bench);
+}
+
+// The linear block with 3 more inputs (w) and outputs (z), weak feedback gains (a stable loop),
+// no Dzw; a PI model of 16 plays (thresholds 0 .. 1.5) in each channel.
+hyst::HystereticLfr<hyst::PrandtlIshlinskii> make_lfr() {
+  auto params = make_model(2 * kChannels, 2 * kChannels).params();
+  params.b.rightCols(kChannels) *= 0.01;
+  params.d.rightCols(kChannels) *= 0.01;
+  params.d.bottomRightCorner(kChannels, kChannels).setZero();
+  std::vector<double> thresholds, weights;
+  for (int j = 0; j < 16; ++j) {
+    thresholds.push_back(0.1 * j);
+    weights.push_back(1.0 / (1 + j));
+  }
+  const hyst::PrandtlIshlinskii pi({thresholds, weights, 0.0});
+  return {hyst::StateSpace(params), std::size_t(kChannels), {pi, pi, pi}};
+}
+
+void BM_HystereticLfrStep(benchmark::State& bench) {
+  run_steps(make_lfr(), bench);
+}
+
 }  // namespace
 
 BENCHMARK(BM_StateSpaceStep);
+BENCHMARK(BM_HystereticLfrStep);

@@ -18,6 +18,7 @@
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/io/numpy_file.hpp"
+#include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::python {
@@ -94,6 +95,27 @@ py::dict score_dict(const SimulationScore& score) {
   out["mean_relative_error"] = score.mean_relative_error;
   out["scored_samples"] = score.scored_samples;
   return out;
+}
+
+SimulationScore score_model(const StateSpace& model, const PeriodicSignals& u,
+                            const PeriodicSignals& y, const ScoreOptions& options) {
+  return score_state_space(model, u, y, options);
+}
+SimulationScore score_model(const AnyHystereticLfr& model, const PeriodicSignals& u,
+                            const PeriodicSignals& y, const ScoreOptions& options) {
+  return score_hysteretic_lfr(model, u, y, options);
+}
+
+template <class Model>
+py::dict evaluate_model(const Model& model, const AnyArray& input, const AnyArray& output,
+                        const std::string& layout, bool periodic, std::size_t transient) {
+  const auto u = periodic_signals(input, layout, "input");
+  const auto y = periodic_signals(output, layout, "output");
+  const auto score = [&] {
+    py::gil_scoped_release release;
+    return score_model(model, u, y, {periodic, transient});
+  }();
+  return score_dict(score);
 }
 
 }  // namespace
@@ -224,23 +246,75 @@ void bind_dynamics(py::module_& module) {
       "Levenberg-Marquardt); returns (StateSpace, FitReport). weighting: none, total_variance or "
       "noise_variance.");
 
+  py::class_<AnyHystereticLfr>(
+      module, "HystereticLfr",
+      "Linear block with hysteresis in its feedback (an LFR): the StateSpace `linear` has the "
+      "inputs (u, w) and the outputs (y, z); each hysteresis model maps z_i to w_i (all of one "
+      "kind among the actuator force models, e.g. 'pi'). HystereticLfr.hammerstein() builds the "
+      "Hammerstein system (a block per input, then the linear block). Records are (samples, "
+      "channels) arrays.")
+      .def(py::init([](const StateSpace& linear, std::size_t inputs,
+                       const std::vector<const DynamicModel*>& feedback) {
+             return AnyHystereticLfr(linear, inputs, feedback);
+           }),
+           "linear"_a, "inputs"_a, "feedback"_a)
+      .def_static(
+          "hammerstein",
+          [](const StateSpace& linear, const std::vector<const DynamicModel*>& blocks) {
+            return AnyHystereticLfr::hammerstein(linear, blocks);
+          },
+          "linear"_a, "blocks"_a, "blocks[i] on input i, then the linear block.")
+      .def_property_readonly("linear", &AnyHystereticLfr::linear,
+                             "The linear block (inputs u then w, outputs y then z).")
+      .def_property_readonly("inputs", &AnyHystereticLfr::inputs)
+      .def_property_readonly("outputs", &AnyHystereticLfr::outputs)
+      .def_property_readonly("order", &AnyHystereticLfr::order)
+      .def_property_readonly("sample_time", &AnyHystereticLfr::sample_time)
+      .def_property_readonly("feedback_model", &AnyHystereticLfr::feedback_model)
+      .def_property_readonly("feedback_channels", &AnyHystereticLfr::feedback_channels)
+      .def_property_readonly("parameter_count", &AnyHystereticLfr::parameter_count)
+      .def(
+          "simulate",
+          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& input) {
+            py::gil_scoped_release release;
+            return model.simulate(input);
+          },
+          "input"_a, "Outputs (N, p) for inputs (N, m) from rest.")
+      .def(
+          "simulate_periodic",
+          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& one_period) {
+            py::gil_scoped_release release;
+            return model.simulate_from_periodic_state(one_period, one_period);
+          },
+          "one_period"_a, "Outputs over one period (N, p) in periodic steady state.")
+      .def(
+          "save",
+          [](const AnyHystereticLfr& model, const std::filesystem::path& path,
+             const py::object& info) {
+            save_hysteretic_lfr(
+                path, model,
+                info.is_none() ? nlohmann::json::object() : python_to_json(info, "info"));
+          },
+          "path"_a, "info"_a = py::none(), "Writes the model file (atomically).")
+      .def("__repr__", [](const AnyHystereticLfr& m) {
+        return fmt::format(
+            "<HystereticLfr: {} states, {} inputs, {} outputs, {} '{}' feedback "
+            "channels, {} parameters>",
+            m.order(), m.inputs(), m.outputs(), m.feedback_channels(), m.feedback_model(),
+            m.parameter_count());
+      });
   module.def(
-      "evaluate",
-      [](const StateSpace& model, const AnyArray& input, const AnyArray& output,
-         const std::string& layout, bool periodic, std::size_t transient) {
-        const auto u = periodic_signals(input, layout, "input");
-        const auto y = periodic_signals(output, layout, "output");
-        const auto score = [&] {
-          py::gil_scoped_release release;
-          return score_state_space(model, u, y, {periodic, transient});
-        }();
-        return score_dict(score);
-      },
-      "model"_a, "input"_a, "output"_a, "layout"_a = kDefaultLayout, "periodic"_a = false,
-      "transient"_a = 0,
-      "The benchmark score of a model on periodic test data: per output channel the RMSE of the "
-      "free-run simulation averaged over realisations and periods, relative to the channel's "
-      "standard deviation, and their means (a dict of numpy arrays and numbers).");
+      "load_hysteretic_lfr",
+      [](const std::filesystem::path& path) { return load_hysteretic_lfr(path).model; }, "path"_a,
+      "Reads a hysteretic LFR model file.");
+
+  module.def("evaluate", &evaluate_model<StateSpace>, "model"_a, "input"_a, "output"_a,
+             "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0,
+             "The benchmark score of a model on periodic test data: per output channel the RMSE "
+             "of the free-run simulation averaged over realisations and periods, relative to the "
+             "channel's standard deviation, and their means (a dict of numpy arrays and numbers).");
+  module.def("evaluate", &evaluate_model<AnyHystereticLfr>, "model"_a, "input"_a, "output"_a,
+             "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0);
 }
 
 }  // namespace hyst::python

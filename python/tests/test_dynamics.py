@@ -156,3 +156,72 @@ def test_benchmark_score_on_the_fine_steering_mirror_matches_its_definition(data
     assert score["mean_relative_error"] == pytest.approx(relative.mean(), rel=1e-9)
     # the published one-model-for-all-levels linear baseline scores 6.61 % here
     assert score["mean_relative_error"] < 0.0661
+
+
+def pi_feedback(scale):
+    return hyst.model_from_dict({"model": "pi", "version": 1, "params": {
+        "thresholds": [0.0, 0.2 * scale], "weights": [0.5, 0.3]}})
+
+
+def test_hysteretic_lfr_agrees_with_its_loop_written_in_numpy(tmp_path):
+    # One state; inputs (u, w), outputs (y, z); w = PI[z].
+    linear = hyst.StateSpace([[0.9]], [[0.5, -0.3]], [[1.2], [0.8]], [[0.1, 0.25], [0.4, 0.0]],
+                             sample_time=0.01)
+    model = hyst.HystereticLfr(linear, inputs=1, feedback=[pi_feedback(0.5)])
+    assert (model.order, model.inputs, model.outputs, model.feedback_channels) == (1, 1, 1, 1)
+    assert model.feedback_model == "pi"
+    assert "'pi' feedback" in repr(model)
+    k = np.arange(300)
+    u = (np.sin(2 * np.pi * k / 50) + 0.4 * np.sin(2 * np.pi * 3 * k / 50))[:, None]
+    x, play, expected = 0.0, 0.0, []
+    for value in u[:, 0]:
+        z = 0.8 * x + 0.4 * value
+        play = max(z - 0.1, min(z + 0.1, play))
+        w = 0.5 * z + 0.3 * play
+        expected.append(1.2 * x + 0.1 * value + 0.25 * w)
+        x = 0.9 * x + 0.5 * value - 0.3 * w
+    np.testing.assert_allclose(model.simulate(u)[:, 0], expected, rtol=0, atol=1e-14)
+
+    path = tmp_path / "lfr.json"
+    model.save(path, info={"made_by": "test"})
+    loaded = hyst.load_hysteretic_lfr(path)
+    np.testing.assert_array_equal(loaded.simulate(u), model.simulate(u))
+    assert json.loads(path.read_text())["info"] == {"made_by": "test"}
+    # Periodic steady state: one more period from it changes nothing.
+    period = u[:50]
+    steady = model.simulate_periodic(period)
+    np.testing.assert_allclose(model.simulate(np.tile(period, (60, 1)))[-50:], steady, atol=1e-9)
+
+
+def test_hammerstein_is_its_blocks_then_the_linear_block():
+    linear = hyst.StateSpace([[0.5, 0.1], [0.0, 0.7]], [[1.0, 0.0], [0.3, 1.0]],
+                             [[1.0, 0.0], [0.5, 1.0]], [[0.0, 0.2], [0.1, 0.0]])
+    blocks = [pi_feedback(1.0), pi_feedback(2.0)]
+    system = hyst.HystereticLfr.hammerstein(linear, blocks)
+    rng = np.random.default_rng(5)
+    u = np.cumsum(rng.normal(size=(200, 2)), axis=0) * 0.1
+    w = np.column_stack([blocks[i].simulate(u[:, i]) for i in range(2)])
+    np.testing.assert_allclose(system.simulate(u), linear.simulate(w), rtol=1e-12, atol=1e-13)
+    with pytest.raises(hyst.Error, match="3 blocks for a linear block with 2 inputs"):
+        hyst.HystereticLfr.hammerstein(linear, blocks + [pi_feedback(1.0)])
+    with pytest.raises(hyst.Error, match="algebraic loop"):
+        hyst.HystereticLfr(hyst.StateSpace([[0.5]], [[1.0, 1.0]], [[1.0], [1.0]],
+                                           [[0.0, 0.0], [0.0, 1.0]]), 1, [pi_feedback(1.0)])
+
+
+def test_hysteretic_lfr_with_the_feedback_cut_scores_as_the_linear_model():
+    linear = hyst.load_state_space(FSM_MODEL)
+    a, b, c, d = linear.a, linear.b, linear.c, linear.d
+    n = a.shape[0]
+    cut = hyst.StateSpace(a, np.hstack([b, np.zeros((n, 1))]), np.vstack([c, c[:1]]),
+                          np.vstack([np.hstack([d, np.zeros((3, 1))]), np.zeros((1, 4))]),
+                          sample_time=linear.sample_time)
+    model = hyst.HystereticLfr(cut, 3, [pi_feedback(1e-6)])
+    data = REPOSITORY.parent / "shared" / "data" / "fsm_piezo_mimo_multisine"
+    if not data.is_dir():
+        pytest.skip("shared data not present")
+    u = np.load(data / "u_200mV_test.npy")[:, :, :1]
+    y = np.load(data / "y_200mV_test.npy")[:, :, :1]
+    expected = hyst.evaluate(linear, u, y, periodic=True)
+    score = hyst.evaluate(model, u, y, periodic=True)
+    assert score["mean_relative_error"] == pytest.approx(expected["mean_relative_error"], rel=1e-10)

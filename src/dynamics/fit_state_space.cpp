@@ -12,7 +12,7 @@
 
 #include "../core/detail/enum_names.hpp"
 #include "../identify/detail/convergence.hpp"
-#include "detail/frequency_response_residual.hpp"
+#include "../identify/detail/frequency_response_residual.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/identify/error_metrics.hpp"
 

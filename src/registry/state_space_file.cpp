@@ -64,8 +64,10 @@ nlohmann::json matrix_json(const Eigen::MatrixXd& matrix) {
   return rows;
 }
 
-StateSpace model_from_params(const nlohmann::json& value) {
-  detail::JsonFields fields(value, "params");
+}  // namespace
+
+StateSpace state_space_from_params(const nlohmann::json& value, const std::string& path) {
+  detail::JsonFields fields(value, path);
   StateSpace::Params p;
   p.sample_time = fields.number("sample_time");
   p.a = matrix_field(fields, "a");
@@ -78,9 +80,20 @@ StateSpace model_from_params(const nlohmann::json& value) {
   try {
     return StateSpace(std::move(p));
   } catch (const Error& error) {
-    detail::rethrow_at(error, "params");
+    detail::rethrow_at(error, path);
   }
 }
+
+nlohmann::json state_space_params_to_json(const StateSpace& model) {
+  const auto& p = model.params();
+  return {{"sample_time", p.sample_time},
+          {"a", matrix_json(p.a)},
+          {"b", matrix_json(p.b)},
+          {"c", matrix_json(p.c)},
+          {"d", matrix_json(p.d)}};
+}
+
+namespace {
 
 Eigen::VectorXd state_vector_from_json(const nlohmann::json& value, const StateSpace& model) {
   detail::JsonFields fields(value, "state");
@@ -123,7 +136,7 @@ StateSpaceFile state_space_from_json(const nlohmann::json& document, std::string
     if (info && !info->is_object())
       throw Error(fmt::format("info: expected an object, got {}", detail::describe_json(*info)));
     fields.finish();
-    StateSpace model = model_from_params(*params);
+    StateSpace model = state_space_from_params(*params, "params");
     std::optional<Eigen::VectorXd> x;
     if (state) x = state_vector_from_json(*state, model);
     return {std::move(model), std::move(x), info ? *info : nlohmann::json::object()};
@@ -135,15 +148,9 @@ StateSpaceFile state_space_from_json(const nlohmann::json& document, std::string
 nlohmann::json state_space_to_json(const StateSpace& model,
                                    const std::optional<Eigen::VectorXd>& state,
                                    const nlohmann::json& info) {
-  const auto& p = model.params();
-  nlohmann::json params = {{"sample_time", p.sample_time},
-                           {"a", matrix_json(p.a)},
-                           {"b", matrix_json(p.b)},
-                           {"c", matrix_json(p.c)},
-                           {"d", matrix_json(p.d)}};
   nlohmann::json document = {{"model", std::string(kStateSpaceModelName)},
                              {"version", kModelFileVersion},
-                             {"params", std::move(params)}};
+                             {"params", state_space_params_to_json(model)}};
   if (state) {
     const Eigen::VectorXd x = model.make_state(*state).x;  // a file that loads again
     document["state"] = {{"x", std::vector<double>(x.data(), x.data() + x.size())}};

@@ -308,8 +308,39 @@ case_fit_system_evaluate() {
       --input-npy "$fsm/u_200mV_test.npy" --output-npy "$fsm/y_200mV_test.npy" --layout N,channel
   fi
 
+  # A hysteretic LFR written by hand (one state; a PI in the feedback) and its output computed
+  # by awk's own loop from rest: hyst scores it 0 from rest.
+  cat > lfr.json <<'JSON'
+{"model": "hysteretic_lfr", "version": 1,
+ "params": {"inputs": 1,
+            "linear": {"sample_time": 0.01, "a": [[0.9]], "b": [[0.5, -0.3]],
+                       "c": [[1.2], [0.8]], "d": [[0.1, 0.25], [0.4, 0.0]]},
+            "feedback": [{"model": "pi", "params": {"thresholds": [0, 0.1], "weights": [0.5, 0.3]}}]}}
+JSON
+  awk 'BEGIN { print "u,y"; x = 0; p = 0
+         for (k = 0; k < 128; k++) {
+           u = sin(2 * 3.141592653589793 * k / 64) + 0.5 * sin(6 * 3.141592653589793 * k / 64)
+           z = 0.8 * x + 0.4 * u
+           if (z - 0.1 > p) p = z - 0.1; if (z + 0.1 < p) p = z + 0.1
+           w = 0.5 * z + 0.3 * p
+           printf "%.17g,%.17g\n", u, 1.2 * x + 0.1 * u + 0.25 * w
+           x = 0.9 * x + 0.5 * u - 0.3 * w } }' > lfr.csv
+  expect_ok "$HYST" evaluate --model lfr.json --data lfr.csv --input u --output y \
+    --samples-per-period 64 --json
+  awk '/"mean_relative_error"/ { gsub(/[",]/, "", $2); if ($2 + 0 > 1e-12) bad = 1; seen = 1 }
+       END { exit !(seen && !bad) }' "$WORK/stdout" ||
+    fail "score of the true hysteretic LFR from rest is not 0: $(cat "$WORK/stdout")"
+  expect_ok "$HYST" evaluate --model lfr.json --data lfr.csv --input u --output y \
+    --samples-per-period 64 --periodic
+  expect_stdout "hysteretic_lfr: 1 states, 1 inputs, 1 outputs, 1 'pi' feedback channels"
+  expect_ok "$HYST" info lfr.json
+  expect_stdout "hysteretic_lfr (linear block with hysteresis in feedback)" "1 'pi' channels"
+  sed 's/\[0.4, 0.0\]/[0.4, 0.5]/' lfr.json > loop.json
+  expect_error 1 "loop.json: params.linear.d[1][1]: hysteretic LFR: D(1, 1) = 0.5" -- \
+    "$HYST" evaluate --model loop.json --data lfr.csv --input u --output y
+
   write_pi_model pi.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
-  expect_error 1 "pi.json: model 'pi' is not a dynamic multi-input model" -- \
+  expect_error 1 "pi.json: model 'pi' is not a dynamic multi-input model (state_space, hysteretic_lfr)" -- \
     "$HYST" evaluate --model pi.json --data lag.csv --input u --output y
   expect_error 1 "1 --input-npy but 0 --output-npy" -- \
     "$HYST" fit-system --input-npy a.npy --sample-time 1 --out x.json

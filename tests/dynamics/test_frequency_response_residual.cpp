@@ -1,7 +1,7 @@
 // The analytic Jacobian of the state-space fit's residuals against central differences, for every
 // parameter of every block (complex pole pairs, a real pole, B, C, D), MIMO and weighted.
 
-#include "../../src/dynamics/detail/frequency_response_residual.hpp"
+#include "../../src/identify/detail/frequency_response_residual.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <variant>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include "commands.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::cli {
@@ -24,19 +26,40 @@ struct EvaluateOptions {
   bool json = false;
 };
 
+//! The dynamic MIMO models that can be scored here.
+using SystemModel = std::variant<StateSpace, AnyHystereticLfr>;
+
 //! The model of a file; only dynamic MIMO models can be scored here.
-StateSpace load_system_model(const std::string& path) {
+SystemModel load_system_model(const std::string& path) {
   const auto document = io::parse_json_text(io::read_file(path), path);
   const auto kind =
       document.is_object() && document.contains("model") && document.at("model").is_string()
           ? document.at("model").get<std::string>()
           : std::string();
-  if (kind != "state_space")
-    throw Error(fmt::format(
-        "{}: model '{}' is not a dynamic multi-input model (state_space); score single-input "
-        "hysteresis models with 'hyst fit --validate' or 'hyst compare'",
-        path, kind));
-  return state_space_from_json(document, path).model;
+  if (kind == "state_space") return state_space_from_json(document, path).model;
+  if (kind == "hysteretic_lfr") return hysteretic_lfr_from_json(document, path).model;
+  throw Error(fmt::format(
+      "{}: model '{}' is not a dynamic multi-input model (state_space, hysteretic_lfr); score "
+      "single-input hysteresis models with 'hyst fit --validate' or 'hyst compare'",
+      path, kind));
+}
+
+SimulationScore score(const SystemModel& model, const PeriodicExperiment& experiment,
+                      const ScoreOptions& options) {
+  if (const auto* linear = std::get_if<StateSpace>(&model))
+    return score_state_space(*linear, experiment.input, experiment.output, options);
+  return score_hysteretic_lfr(std::get<AnyHystereticLfr>(model), experiment.input,
+                              experiment.output, options);
+}
+
+std::string describe(const SystemModel& model) {
+  if (const auto* linear = std::get_if<StateSpace>(&model))
+    return fmt::format("state_space: {} states, {} inputs, {} outputs", linear->order(),
+                       linear->inputs(), linear->outputs());
+  const auto& lfr = std::get<AnyHystereticLfr>(model);
+  return fmt::format("hysteretic_lfr: {} states, {} inputs, {} outputs, {} '{}' feedback channels",
+                     lfr.order(), lfr.inputs(), lfr.outputs(), lfr.feedback_channels(),
+                     lfr.feedback_model());
 }
 
 nlohmann::json score_json(const SimulationScore& score) {
@@ -54,29 +77,27 @@ void run(const EvaluateOptions& options) {
   const auto model = load_system_model(options.model);
   const auto experiments = read_experiments(options.data);
   const auto& experiment = experiments.at(0);
-  const auto score = score_state_space(model, experiment.input, experiment.output,
-                                       {options.periodic, options.transient});
+  const auto result = score(model, experiment, {options.periodic, options.transient});
   if (options.json) {
-    auto out = score_json(score);
+    auto out = score_json(result);
     out["model"] = options.model;
     out["periodic"] = options.periodic;
     out["transient_samples"] = options.transient;
     fmt::print("{}\n", out.dump(2));
     return;
   }
-  fmt::print("model: {} (state_space: {} states, {} inputs, {} outputs)\n", options.model,
-             model.order(), model.inputs(), model.outputs());
+  fmt::print("model: {} ({})\n", options.model, describe(model));
   fmt::print("data:  {}\n", describe_experiment(options.data, 0, experiment));
   fmt::print("start: {}\n\n",
              options.periodic ? "periodic steady state"
                               : fmt::format("rest, first {} samples of each realisation left out",
                                             options.transient));
   fmt::print("{:<8} {:>14} {:>15}\n", "output", "RMSE", "relative error");
-  for (std::size_t c = 0; c < score.channels.size(); ++c)
-    fmt::print("{:<8} {:>14.6g} {:>14.3f} %\n", c + 1, score.channels[c].rmse,
-               100.0 * score.channels[c].relative_error);
-  fmt::print("{:<8} {:>14.6g} {:>14.3f} %\n", "mean", score.mean_rmse,
-             100.0 * score.mean_relative_error);
+  for (std::size_t c = 0; c < result.channels.size(); ++c)
+    fmt::print("{:<8} {:>14.6g} {:>14.3f} %\n", c + 1, result.channels[c].rmse,
+               100.0 * result.channels[c].relative_error);
+  fmt::print("{:<8} {:>14.6g} {:>14.3f} %\n", "mean", result.mean_rmse,
+             100.0 * result.mean_relative_error);
 }
 
 }  // namespace

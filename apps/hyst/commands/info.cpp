@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
@@ -49,10 +50,45 @@ void show_state_space(const InfoOptions& options, const nlohmann::json& document
   if (!info.is_null()) fmt::print("\ninfo (how the file was made):\n{}\n", info.dump(2));
 }
 
+//! A hysteretic LFR model file (hyst/registry/hysteretic_lfr_file.hpp): sizes, the feedback, the
+//! linear block's poles.
+void show_hysteretic_lfr(const InfoOptions& options, const nlohmann::json& document) {
+  const auto file = hysteretic_lfr_from_json(document, options.file);
+  const auto& model = file.model;
+  const auto& linear = model.linear();
+  if (options.json) {
+    nlohmann::json out = {{"file", options.file},
+                          {"model", "hysteretic_lfr"},
+                          {"order", model.order()},
+                          {"inputs", model.inputs()},
+                          {"outputs", model.outputs()},
+                          {"feedback_model", model.feedback_model()},
+                          {"feedback_channels", model.feedback_channels()},
+                          {"parameters", model.parameter_count()},
+                          {"sample_time", model.sample_time()},
+                          {"linear_spectral_radius", linear.spectral_radius()}};
+    if (!file.info.empty()) out["info"] = file.info;
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  fmt::print("file:        {}\n", options.file);
+  fmt::print("model:       hysteretic_lfr (linear block with hysteresis in feedback)\n");
+  fmt::print("size:        {} states, {} inputs, {} outputs, {} parameters\n", model.order(),
+             model.inputs(), model.outputs(), model.parameter_count());
+  fmt::print("feedback:    {} '{}' channels\n", model.feedback_channels(), model.feedback_model());
+  fmt::print("sample time: {:g} s\n", model.sample_time());
+  fmt::print("linear poles: largest magnitude {:.6g} (without the feedback)\n",
+             linear.spectral_radius());
+  if (!file.info.empty()) fmt::print("\ninfo (how the file was made):\n{}\n", file.info.dump(2));
+}
+
 void run(const InfoOptions& options) {
   const auto document = io::parse_json_text(io::read_file(options.file), options.file);
   if (document.is_object() && document.contains("model") && document.at("model") == "state_space")
     return show_state_space(options, document);
+  if (document.is_object() && document.contains("model") &&
+      document.at("model") == "hysteretic_lfr")
+    return show_hysteretic_lfr(options, document);
   const auto model = load_model(options.file);
   // The "info" object is not part of the model; load_model() checked it is an object if present.
   const auto info = document.contains("info") ? document.at("info") : nlohmann::json();

@@ -17,6 +17,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include <Eigen/Dense>
@@ -39,6 +40,11 @@ StateSpaceFile state_space_from_json(const nlohmann::json& document, std::string
 nlohmann::json state_space_to_json(const StateSpace& model,
                                    const std::optional<Eigen::VectorXd>& state = std::nullopt,
                                    const nlohmann::json& info = nlohmann::json::object());
+//! The "params" object of a state-space model file alone (also the linear block of other models'
+//! files); messages name `path` ("params.linear.b[2][0]: expected a number").
+StateSpace state_space_from_params(const nlohmann::json& params, const std::string& path);
+//! The "params" object of a model.
+nlohmann::json state_space_params_to_json(const StateSpace& model);
 //! Reads and validates a model file.
 StateSpaceFile load_state_space(const std::filesystem::path& path);
 //! Writes a model file atomically (nothing is written when the state is refused).
