@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/dynamics/best_linear_approximation.hpp"
+#include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/dynamics/state_space.hpp"
@@ -307,6 +308,34 @@ void bind_dynamics(py::module_& module) {
       "load_hysteretic_lfr",
       [](const std::filesystem::path& path) { return load_hysteretic_lfr(path).model; }, "path"_a,
       "Reads a hysteretic LFR model file.");
+
+  module.def(
+      "fit_hysteretic_lfr",
+      [](const StateSpace& linear, const py::sequence& experiments, const std::string& layout,
+         const std::vector<double>& threshold_fractions, bool fit_poles, double max_pole_radius,
+         std::size_t max_iterations, std::size_t threads, const py::object& progress) {
+        const auto data = experiments_of(experiments, layout);
+        HystereticLfrFitOptions options;
+        options.threshold_fractions = threshold_fractions;
+        options.fit_poles = fit_poles;
+        options.max_pole_radius = max_pole_radius;
+        options.max_iterations = max_iterations;
+        options.threads = threads;
+        options.progress = progress_callback(progress);
+        auto fit = [&] {
+          py::gil_scoped_release release;
+          return fit_hysteretic_lfr(linear, data, options);
+        }();
+        return py::make_tuple(any_hysteretic_lfr(fit.model), std::move(fit.report));
+      },
+      "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
+      "threshold_fractions"_a = HystereticLfrFitOptions{}.threshold_fractions, "fit_poles"_a = true,
+      "max_pole_radius"_a = HystereticLfrFitOptions{}.max_pole_radius,
+      "max_iterations"_a = HystereticLfrFitOptions{}.max_iterations,
+      "threads"_a = HystereticLfrFitOptions{}.threads, "progress"_a = py::none(),
+      "A hysteretic LFR fitted from a linear model on the simulation error of periodic "
+      "experiments (a sequence of (input, output) arrays whose axes `layout` names): a PI model "
+      "per output in the feedback; returns (HystereticLfr, FitReport).");
 
   module.def("evaluate", &evaluate_model<StateSpace>, "model"_a, "input"_a, "output"_a,
              "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0,

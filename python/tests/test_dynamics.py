@@ -225,3 +225,35 @@ def test_hysteretic_lfr_with_the_feedback_cut_scores_as_the_linear_model():
     expected = hyst.evaluate(linear, u, y, periodic=True)
     score = hyst.evaluate(model, u, y, periodic=True)
     assert score["mean_relative_error"] == pytest.approx(expected["mean_relative_error"], rel=1e-10)
+
+
+def test_fit_hysteretic_lfr_learns_a_feedback_the_linear_model_lacks():
+    # The true system: a lightly damped mode with a PI model of its output fed back to its input.
+    a = 0.97 * np.array([[math.cos(0.3), math.sin(0.3)], [-math.sin(0.3), math.cos(0.3)]])
+    linear = hyst.StateSpace(a, [[0.0], [1.0]], [[0.2, 0.1]], [[0.0]], sample_time=1e-3)
+    truth = hyst.HystereticLfr(
+        hyst.StateSpace(a, [[0.0, 0.0], [1.0, -0.5]], [[0.2, 0.1], [0.2, 0.1]],
+                        [[0.0, 0.0], [0.0, 0.0]], sample_time=1e-3),
+        1, [hyst.model_from_dict({"model": "pi", "version": 1, "params": {
+            "thresholds": [0.0, 0.3, 0.8], "weights": [0.2, 0.4, 0.3]}})])
+    rng = np.random.default_rng(3)
+    n = np.arange(256)
+    experiments = []
+    for rms in (0.5, 3.0):
+        u = np.empty((256, 1, 3, 2))
+        y = np.empty_like(u)
+        for r in range(3):
+            period = sum(np.cos(2 * np.pi * k * n / 256 + rng.uniform(0, 2 * np.pi))
+                         for k in range(1, 41))
+            period *= rms / np.sqrt(np.mean(period ** 2))
+            steady = truth.simulate_periodic(period[:, None])
+            u[:, 0, r, :] = period[:, None]
+            y[:, 0, r, :] = steady
+        experiments.append((u, y))
+    result = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5])
+    assert result.report.parameters == 7
+    for u, y in experiments:
+        before = hyst.evaluate(linear, u, y, periodic=True)["mean_relative_error"]
+        after = hyst.evaluate(result.model, u, y, periodic=True)["mean_relative_error"]
+        assert before > 0.1
+        assert after < 0.1 * before

@@ -139,6 +139,19 @@ Eigen::MatrixXd AnyHystereticLfr::simulate_from_periodic_state(
       model_);
 }
 
+AnyHystereticLfr any_hysteretic_lfr(const HystereticLfr<PrandtlIshlinskii>& model) {
+  const auto& entry = ModelRegistry::builtin().find("pi");
+  std::vector<std::unique_ptr<DynamicModel>> owned;
+  std::vector<const DynamicModel*> feedback;
+  for (const auto& block : model.feedback()) {
+    const auto& p = block.params();
+    owned.push_back(entry.create(
+        {{"thresholds", p.thresholds}, {"weights", p.weights}, {"offset", p.offset}}, nullptr));
+    feedback.push_back(owned.back().get());
+  }
+  return AnyHystereticLfr(model.linear(), model.inputs(), feedback);
+}
+
 SimulationScore score_hysteretic_lfr(const AnyHystereticLfr& model, const PeriodicSignals& input,
                                      const PeriodicSignals& output, const ScoreOptions& options) {
   if (options.periodic)

@@ -2,6 +2,7 @@
 // best linear approximation of the pooled experiments, then a state-space model of it
 // (hyst/dynamics/fit_state_space.hpp).
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,8 +12,10 @@
 
 #include "../dynamic_data.hpp"
 #include "commands.hpp"
+#include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
+#include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::cli {
@@ -27,17 +30,76 @@ struct FitSystemOptions {
   std::size_t max_iterations = 200;
   double excitation_threshold = BlaOptions{}.excitation_threshold;
   std::size_t transient_periods = 0;
+  std::string linear;  // hysteretic_lfr: start from this linear model
+  std::vector<double> threshold_fractions = HystereticLfrFitOptions{}.threshold_fractions;
+  std::size_t lfr_iterations = HystereticLfrFitOptions{}.max_iterations;
+  bool fixed_poles = false;
   std::string out;
 };
 
+nlohmann::json scores_json(const std::vector<PeriodicExperiment>& experiments,
+                           const DynamicDataOptions& data,
+                           const std::function<SimulationScore(const PeriodicExperiment&)>& score) {
+  nlohmann::json scores = nlohmann::json::array();
+  for (std::size_t i = 0; i < experiments.size(); ++i) {
+    const auto result = score(experiments[i]);
+    fmt::print("experiment {} (periodic steady state): relative error {:.3f} % (RMSE {:.6g})\n",
+               i + 1, 100.0 * result.mean_relative_error, result.mean_rmse);
+    scores.push_back({{"experiment", describe_experiment(data, i, experiments[i])},
+                      {"mean_relative_error", result.mean_relative_error},
+                      {"mean_rmse", result.mean_rmse}});
+  }
+  return scores;
+}
+
+nlohmann::json fit_info(const FitReport& report, nlohmann::json scores) {
+  return {{"fit",
+           {{"method", report.method},
+            {"status", std::string(report.status())},
+            {"iterations", report.iterations},
+            {"parameters", report.parameters},
+            {"seconds", report.seconds}}},
+          {"training_scores", std::move(scores)}};
+}
+
+// The hysteretic LFR from a linear model: given (--linear) or fitted here first.
+void fit_lfr(const FitSystemOptions& options, const std::vector<PeriodicExperiment>& experiments,
+             const StateSpace& linear) {
+  HystereticLfrFitOptions fit_options;
+  fit_options.threshold_fractions = options.threshold_fractions;
+  fit_options.max_iterations = options.lfr_iterations;
+  fit_options.fit_poles = !options.fixed_poles;
+  const auto fit = fit_hysteretic_lfr(linear, experiments, fit_options);
+  fmt::print("{}\n", fit.report.brief());
+  const auto model = any_hysteretic_lfr(fit.model);
+  const ScoreOptions periodic{.periodic = true};
+  auto scores = scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
+    return score_hysteretic_lfr(model, x.input, x.output, periodic);
+  });
+  save_hysteretic_lfr(options.out, model, fit_info(fit.report, std::move(scores)));
+  fmt::print("wrote {}: hysteretic_lfr model, {} states, {} inputs, {} outputs, {} parameters\n",
+             options.out, model.order(), model.inputs(), model.outputs(), model.parameter_count());
+}
+
 void run(const FitSystemOptions& options) {
-  if (options.model != "state_space")
-    throw Error(fmt::format("--model '{}': the dynamic models are: state_space", options.model));
+  if (options.model != "state_space" && options.model != "hysteretic_lfr")
+    throw Error(fmt::format("--model '{}': the dynamic models are: state_space, hysteretic_lfr",
+                            options.model));
+  if (!options.linear.empty() && options.model != "hysteretic_lfr")
+    throw Error("--linear: only with --model hysteretic_lfr (the linear model it starts from)");
   auto inputs = dynamic_data_inputs(options.data);
+  if (!options.linear.empty()) inputs.push_back({options.linear, "--linear"});
   io::check_outputs(inputs, {{options.out, "--out"}});
   const auto experiments = read_experiments(options.data);
   for (std::size_t i = 0; i < experiments.size(); ++i)
     fmt::print("experiment {}: {}\n", i + 1, describe_experiment(options.data, i, experiments[i]));
+  if (!options.linear.empty()) {
+    const auto linear = load_state_space(options.linear).model;
+    if (linear.sample_time() != options.sample_time)
+      throw Error(fmt::format("--linear {}: sample time {:g} s, but --sample-time is {:g} s",
+                              options.linear, linear.sample_time(), options.sample_time));
+    return fit_lfr(options, experiments, linear);
+  }
 
   const auto bla = estimate_bla(experiments, options.sample_time,
                                 {options.excitation_threshold, options.transient_periods});
@@ -53,24 +115,12 @@ void run(const FitSystemOptions& options) {
   const auto fit = fit_state_space(bla, fit_options);
   fmt::print("{}\n", fit.report.brief());
 
-  nlohmann::json scores = nlohmann::json::array();
-  for (std::size_t i = 0; i < experiments.size(); ++i) {
-    const auto score = score_state_space(fit.model, experiments[i].input, experiments[i].output,
-                                         {.periodic = true});
-    fmt::print("experiment {} (periodic steady state): relative error {:.3f} % (RMSE {:.6g})\n",
-               i + 1, 100.0 * score.mean_relative_error, score.mean_rmse);
-    scores.push_back({{"experiment", describe_experiment(options.data, i, experiments[i])},
-                      {"mean_relative_error", score.mean_relative_error},
-                      {"mean_rmse", score.mean_rmse}});
-  }
-  const nlohmann::json info = {{"fit",
-                                {{"method", fit.report.method},
-                                 {"status", std::string(fit.report.status())},
-                                 {"iterations", fit.report.iterations},
-                                 {"parameters", fit.report.parameters},
-                                 {"lines", bla.lines.size()},
-                                 {"seconds", fit.report.seconds}}},
-                               {"training_scores", scores}};
+  if (options.model == "hysteretic_lfr") return fit_lfr(options, experiments, fit.model);
+  auto info =
+      fit_info(fit.report, scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
+                 return score_state_space(fit.model, x.input, x.output, {.periodic = true});
+               }));
+  info["fit"]["lines"] = bla.lines.size();
   save_state_space(options.out, fit.model, std::nullopt, info);
   fmt::print("wrote {}: state_space model, {} states, {} inputs, {} outputs\n", options.out,
              fit.model.order(), fit.model.inputs(), fit.model.outputs());
@@ -82,7 +132,10 @@ void add_fit_system_command(CLI::App& app) {
   auto options = std::make_shared<FitSystemOptions>();
   auto* command = app.add_subcommand(
       "fit-system", "Fit a dynamic multi-input model (state space) to periodic experiments.");
-  command->add_option("--model", options->model, "Dynamic model: state_space")
+  command
+      ->add_option("--model", options->model,
+                   "Dynamic model: state_space, or hysteretic_lfr (a PI model per output in the "
+                   "feedback of the linear model, fitted on the simulation error)")
       ->capture_default_str();
   add_dynamic_data_options(*command, options->data, true);
   command->add_option("--sample-time", options->sample_time, "Sample time Ts [s]")
@@ -106,6 +159,22 @@ void add_fit_system_command(CLI::App& app) {
       ->add_option("--transient-periods", options->transient_periods,
                    "Periods left out at the start of each realisation")
       ->capture_default_str();
+  command
+      ->add_option("--linear", options->linear,
+                   "hysteretic_lfr: start from this state_space model file instead of fitting one")
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--thresholds", options->threshold_fractions,
+                   "hysteretic_lfr: PI thresholds as fractions of the largest hysteresis input, "
+                   "from 0")
+      ->delimiter(',')
+      ->capture_default_str();
+  command
+      ->add_option("--lfr-iterations", options->lfr_iterations,
+                   "hysteretic_lfr: Levenberg-Marquardt iterations on the simulation error")
+      ->capture_default_str();
+  command->add_flag("--fixed-poles", options->fixed_poles,
+                    "hysteretic_lfr: keep the linear model's poles (fit the feedback alone)");
   command->add_option("--out", options->out, "Model file to write (JSON)")->required();
   command->footer(R"(The experiments (e.g. several amplitude levels) are pooled into one best
 linear approximation, of which a state-space model of the given order is fitted.

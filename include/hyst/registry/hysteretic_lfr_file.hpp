@@ -84,6 +84,9 @@ class AnyHystereticLfr {
   std::size_t parameter_count_ = 0;
 };
 
+//! A hysteretic LFR with PI models (e.g. fit_hysteretic_lfr()'s) in the run-time form.
+AnyHystereticLfr any_hysteretic_lfr(const HystereticLfr<PrandtlIshlinskii>& model);
+
 //! The benchmark score of a hysteretic LFR (simulation_score.hpp); periodic: each realisation
 //! starts in the periodic steady state of its first period.
 SimulationScore score_hysteretic_lfr(const AnyHystereticLfr& model, const PeriodicSignals& input,

@@ -1,0 +1,60 @@
+#pragma once
+//! \file
+//! A hysteretic LFR fitted to periodic experiments on the simulation error, starting from a
+//! fitted linear model (fit_state_space.hpp). The structure follows a piezo stage: the hysteresis
+//! sits in the actuators, whose forces enter the structure where the inputs do, and it is driven by
+//! the actuators' elongations, which the measured displacements see through a linear map. So the
+//! feedback is
+//!
+//!     z = T (Cy x + Dyu u)                  (T: q x p, the elongations from the outputs)
+//!     w_i = PI_i[z_i]                       (one PI model per channel, q = p)
+//!     u_eff = u + Theta w                   (Theta: m x q, enters where the inputs do)
+//!
+//! i.e. the LFR's linear block has Bw = Bu Theta, Dyw = Dyu Theta, Cz = T Cy, Dzu = T Dyu. With
+//! Theta = 0 it is the linear model. Each PI has thresholds at fixed fractions of the largest
+//! |z_i| over the data (the first 0, its weight held at 1: it is the linear stiffness change, the
+//! others make it depend on the amplitude); Theta, T and the other weights are fitted by
+//! Levenberg-Marquardt (Ceres, central differences) on the free-run simulation error of every
+//! realisation, each period after a warm-up period, each experiment's channels weighted by
+//! 1 / their standard deviation (the benchmark's relative error). With fit_poles, the poles of the
+//! linear block (in real modal form) are fitted with them; its Bu, Cy and Dyu stay as fitted.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "hyst/core/progress.hpp"
+#include "hyst/dynamics/best_linear_approximation.hpp"
+#include "hyst/dynamics/hysteretic_lfr.hpp"
+#include "hyst/dynamics/state_space.hpp"
+#include "hyst/identify/fit_report.hpp"
+#include "hyst/models/prandtl_ishlinskii.hpp"
+
+namespace hyst {
+
+struct HystereticLfrFitOptions {
+  //! PI thresholds as fractions of the largest |z_i|, increasing from 0.
+  std::vector<double> threshold_fractions = {0.0, 0.02, 0.05, 0.1, 0.2, 0.4};
+  std::size_t max_iterations = 30;  //!< Levenberg-Marquardt iterations
+  std::size_t threads = 2;          //!< realisations simulated in parallel
+  //! Fit the poles of the linear block too (radius and angle of each), when its A is in real modal
+  //! form (fit_state_space's is): the feedback then shifts the resonances around poles that need
+  //! not be the pooled linear fit's compromise.
+  bool fit_poles = true;
+  double max_pole_radius = 0.99999;  //!< bound on every fitted pole's magnitude
+  ProgressCallback progress{};       //!< told before the fit and when it ends
+};
+
+struct HystereticLfrFit {
+  HystereticLfr<PrandtlIshlinskii> model;
+  FitReport report;  //!< fit: relative to the measured outputs of the scored periods
+};
+
+//! Throws hyst::Error for no experiment, experiments whose channel counts differ from the linear
+//! model's, fewer than 2 periods in a realisation (one warms up), thresholds that do not increase
+//! from 0, or a linear model whose periodic state does not exist.
+HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
+                                    std::span<const PeriodicExperiment> experiments,
+                                    const HystereticLfrFitOptions& options = {});
+
+}  // namespace hyst
