@@ -234,14 +234,6 @@ HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
                                     const HystereticLfrFitOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   check(linear, experiments, options);
-  if (options.fit_poles) {
-    for (const auto& block : modal_blocks(linear.params().a))
-      if (!(block.radius < options.max_pole_radius))
-        throw Error(fmt::format("hysteretic LFR fit: a pole of the linear model has magnitude {}, "
-                                "not below max_pole_radius {}",
-                                block.radius, options.max_pole_radius),
-                    "max_pole_radius");
-  }
   const auto tell = [&](std::size_t done, std::string_view step) {
     if (options.progress) options.progress(Progress{"hysteretic LFR fit", done, 1, step});
   };
@@ -251,6 +243,12 @@ HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
   s.p = Index(linear.outputs());
   s.thresholds = options.threshold_fractions;
   if (options.fit_poles) s.poles = modal_blocks(linear.params().a);
+  for (const auto& block : s.poles)
+    if (!(block.radius < options.max_pole_radius))
+      throw Error(fmt::format("hysteretic LFR fit: a pole of the linear model has magnitude {}, "
+                              "not below max_pole_radius {}",
+                              block.radius, options.max_pole_radius),
+                  "max_pole_radius");
   s.output_scale = Eigen::VectorXd::Zero(s.p);
   for (const auto& x : experiments) {
     for (std::size_t i = 0; i < x.input.values.size(); ++i)

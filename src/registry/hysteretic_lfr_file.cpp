@@ -177,10 +177,7 @@ HystereticLfrFile hysteretic_lfr_from_json(const nlohmann::json& document,
     if (name != kHystereticLfrModelName)
       throw Error(fmt::format("model: \"{}\" is not a hysteretic LFR model file (expected \"{}\")",
                               name, kHystereticLfrModelName));
-    const auto* version = fields.raw("version");
-    if (!version || !version->is_number_integer() || version->get<long long>() != kModelFileVersion)
-      throw Error(fmt::format("version: {} is not supported (this library reads version {})",
-                              version ? version->dump() : "missing", kModelFileVersion));
+    require_model_file_version(fields.raw("version"));
     const auto* params = fields.raw("params");
     if (!params) throw Error("params: missing field");
     const auto* info = fields.raw("info");

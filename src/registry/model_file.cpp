@@ -13,6 +13,15 @@
 
 namespace hyst {
 
+void require_model_file_version(const nlohmann::json* version) {
+  if (!version)
+    throw Error(
+        fmt::format("version: missing field (this library writes version {})", kModelFileVersion));
+  if (!version->is_number_integer() || version->get<long long>() != kModelFileVersion)
+    throw Error(fmt::format("version: {} is not supported (this library reads version {})",
+                            version->dump(), kModelFileVersion));
+}
+
 std::unique_ptr<DynamicModel> model_from_json(const nlohmann::json& document,
                                               std::string_view source,
                                               const ModelRegistry& registry) {
@@ -24,11 +33,7 @@ std::unique_ptr<DynamicModel> model_from_json(const nlohmann::json& document,
     const auto name = fields.string("model");
     const auto& entry = registry.find(name);
     const auto* version = fields.raw("version");
-    if (!version) throw Error("version: missing field (this library writes version 1)");
-    if (!version->is_number_integer() || version->get<long long>() != kModelFileVersion) {
-      throw Error(fmt::format("version: {} is not supported (this library reads version {})",
-                              version->dump(), kModelFileVersion));
-    }
+    require_model_file_version(version);
     const auto* params = fields.raw("params");
     if (!params) throw Error("params: missing field");
     const auto* state = fields.raw("state");

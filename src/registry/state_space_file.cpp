@@ -108,15 +108,6 @@ Eigen::VectorXd state_vector_from_json(const nlohmann::json& value, const StateS
   }
 }
 
-void require_version(const nlohmann::json* version) {
-  if (!version)
-    throw Error(
-        fmt::format("version: missing field (this library writes version {})", kModelFileVersion));
-  if (!version->is_number_integer() || version->get<long long>() != kModelFileVersion)
-    throw Error(fmt::format("version: {} is not supported (this library reads version {})",
-                            version->dump(), kModelFileVersion));
-}
-
 }  // namespace
 
 StateSpaceFile state_space_from_json(const nlohmann::json& document, std::string_view source) {
@@ -128,7 +119,7 @@ StateSpaceFile state_space_from_json(const nlohmann::json& document, std::string
     if (name != kStateSpaceModelName)
       throw Error(fmt::format("model: \"{}\" is not a state-space model file (expected \"{}\")",
                               name, kStateSpaceModelName));
-    require_version(fields.raw("version"));
+    require_model_file_version(fields.raw("version"));
     const auto* params = fields.raw("params");
     if (!params) throw Error("params: missing field");
     const auto* state = fields.raw("state");

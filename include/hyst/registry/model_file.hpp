@@ -26,6 +26,10 @@ namespace hyst {
 //! The model-file format version this library reads and writes.
 inline constexpr int kModelFileVersion = 1;
 
+//! Checks a document's "version" field (null when missing); hyst::Error says what this library
+//! reads ("version: 2 is not supported (this library reads version 1)").
+void require_model_file_version(const nlohmann::json* version);
+
 //! Builds a model from a parsed model-file document; `source` (a file name) prefixes messages.
 std::unique_ptr<DynamicModel> model_from_json(
     const nlohmann::json& document, std::string_view source,
