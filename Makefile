@@ -21,9 +21,9 @@ JOBS       ?= $(shell nproc)
 DEMO_OUT   ?= out/demo
 
 # Debian 12 packages the build and the tests need.
-DEBIAN_PACKAGES := cmake make g++ pkg-config \
+DEBIAN_PACKAGES := cmake make gcc g++ pkg-config \
   libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  libmatio-dev zlib1g-dev libzip-dev nlohmann-json3-dev libcli11-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libboost-dev \
+  libmatio-dev zlib1g-dev libzip-dev libpugixml-dev nlohmann-json3-dev libcli11-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libboost-dev \
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-mypy python3-matplotlib \
   python3-nbclient python3-nbformat python3-ipykernel python3-tqdm gnuplot-nox \
   libjs-chart.js clang libclang-rt-14-dev chromium

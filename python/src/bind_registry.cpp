@@ -13,6 +13,7 @@
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/export/export_c.hpp"
+#include "hyst/export/export_fmu.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -332,6 +333,41 @@ void bind_registry(py::module_& module) {
       "Writes the model (and its inverse, where there is one) as dependency-free C99 code: "
       "<prefix>.h and <prefix>.c in an existing folder (as `hyst export --lang c`). Returns "
       "{'header', 'source', 'has_inverse'}.");
+
+  module.def(
+      "export_fmu",
+      [](const DynamicModel& m, const std::filesystem::path& folder, const std::string& prefix,
+         bool single, bool inverse, const std::string& input_name, const std::string& output_name,
+         const std::string& input_unit, const std::string& output_unit, double input_min,
+         double input_max, const std::string& compiler, const std::string& source) {
+        FmuExportOptions options;
+        options.code.prefix = prefix;
+        options.code.scalar = single ? CScalar::single_precision : CScalar::double_precision;
+        options.code.limits = {input_min, input_max};
+        options.code.source = source;
+        options.inverse = inverse;
+        options.input_name = input_name;
+        options.output_name = output_name;
+        options.input_unit = input_unit;
+        options.output_unit = output_unit;
+        options.compiler = compiler;
+        FmuFiles files;
+        {
+          py::gil_scoped_release release;
+          files = export_fmu(m, folder, options);
+        }
+        return py::dict("model"_a = files.model, "inverse"_a = files.inverse.empty()
+                                                                   ? py::object(py::none())
+                                                                   : py::cast(files.inverse));
+      },
+      "model"_a, "folder"_a, "prefix"_a = "", "float"_a = false, "inverse"_a = false,
+      "input_name"_a = "u", "output_name"_a = "y", "input_unit"_a = "", "output_unit"_a = "",
+      "input_min"_a = -std::numeric_limits<double>::infinity(),
+      "input_max"_a = std::numeric_limits<double>::infinity(), "compiler"_a = "", "source"_a = "",
+      "Writes the model as an FMI 2.0 co-simulation FMU, <prefix>.fmu in `folder` (created when "
+      "missing), and with inverse=True its inverse compensator as <prefix>_inverse.fmu (as "
+      "`hyst export --lang fmu`). The binary is built by `compiler` ($CC or cc by default). "
+      "Returns {'model', 'inverse'} (paths; inverse None when not asked for).");
 
   module.def(
       "fit",

@@ -147,6 +147,14 @@ CModelCode emit_c(const BoucWen& bouc_wen, const BoucWen::State& state, const CW
             : fmt::format("classical RK4 with max({}, ceil(|dx| / {})) equal steps per sample, "
                           "at most 1000000",
                           p.substeps, writer.number(max_step)));
+  code.parameters = {
+      c_scalar("a", p.a, CUnit::none, "A, the slope of z at z = 0"),
+      c_scalar("beta", p.beta, CUnit::none, "beta"),
+      c_scalar("gamma", p.gamma, CUnit::none, "gamma"),
+      c_scalar("stiffness", p.stiffness, CUnit::output_per_input, "stiffness k"),
+      c_scalar("alpha_k", p.alpha_k, CUnit::none, "ratio alpha_k of the linear part")};
+  // The exact scheme holds for n = 1 alone: n is a parameter of the RK4 rule only.
+  if (!exact) code.parameters.push_back(c_scalar("n", p.n, CUnit::none, "exponent n"));
   code.header =
       CWriter::fill(kBoucWenHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}}) +
       c_model_declarations("x = 0, z = 0",

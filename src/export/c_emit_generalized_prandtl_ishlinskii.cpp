@@ -185,6 +185,20 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
       "gamma_r^-1(u)\n"
       " * while it falls (include/hyst/inverse/inverse_generalized_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = true;
+  const auto envelope = fmt::format("{} envelope coefficients", to_string(params.envelope));
+  code.parameters = {
+      c_array("ascending", params.ascending, CUnit::none, "ascending " + envelope),
+      c_array("descending", params.descending, CUnit::none, "descending " + envelope),
+      c_array("thresholds", gpi.thresholds(), CUnit::none,
+              "operator thresholds r_j (envelope units)"),
+      c_array("weights", gpi.weights(), CUnit::none, "operator weights p_j")};
+  code.inverse_parameters = {
+      c_array("thresholds", ip.thresholds, CUnit::output, "inverse play thresholds rh_j"),
+      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
+      c_array("ascending", params.ascending, CUnit::none, "ascending " + envelope),
+      c_array("descending", params.descending, CUnit::none, "descending " + envelope),
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
   code.header = CWriter::fill(
       kGpiHeader, {{"N", std::to_string(gpi.size())},
                    {"K", std::to_string(E::coefficient_count)},

@@ -96,6 +96,9 @@ CModelCode emit_c(const PrandtlIshlinskii& pi, const PrandtlIshlinskii::State& s
       " * v = sum_j ph_j wh_j on y - y_off "
       "(include/hyst/inverse/inverse_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = pi.is_invertible();
+  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j"),
+                     c_array("weights", p.weights, CUnit::output_per_input, "play weights p_j"),
+                     c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header = CWriter::fill(R"(#define @_OPERATORS %N%
 
 /* Parameters: thresholds r_j [input units], weights p_j [output/input units], offset y_off
@@ -123,6 +126,12 @@ typedef struct {
 
   const InversePrandtlIshlinskii inverse(pi, {options.limits.input_min, options.limits.input_max});
   const auto& ip = inverse.inverse_operator().params();
+  code.inverse_parameters = {
+      c_array("thresholds", ip.thresholds, CUnit::output, "inverse play thresholds rh_j"),
+      c_array("weights", ip.weights, CUnit::input_per_output, "inverse play weights ph_j"),
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned"),
+      c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header += R"(
 /* Inverse parameters: a PI operator with thresholds rh_j and weights ph_j on target - y_off,
    then the input limits. */
@@ -169,6 +178,14 @@ CModelCode emit_c(const ModifiedPrandtlIshlinskii& mpi,
       " * invertible: v = PI^-1[S^-1(y - y_off)], S^-1 again a dead-zone superposition\n"
       " * (include/hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = mpi.is_invertible();
+  code.parameters = {
+      c_array("thresholds", p.pi.thresholds, CUnit::input, "play thresholds r_j"),
+      c_array("weights", p.pi.weights, CUnit::none, "play weights p_j"),
+      c_scalar("pi_offset", p.pi.offset, CUnit::none, "offset q of the PI part"),
+      c_array("dead_zone_thresholds", p.dead_zone.thresholds, CUnit::none,
+              "dead-zone thresholds d_i (units of the PI part)"),
+      c_array("dead_zone_weights", p.dead_zone.weights, CUnit::none, "dead-zone weights g_i"),
+      c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header = CWriter::fill(R"(#define @_OPERATORS %N%
 #define @_DEAD_ZONES %D%
 
@@ -212,6 +229,16 @@ typedef struct {
       mpi, {options.limits.input_min, options.limits.input_max});
   const auto& ip = inverse.hysteresis_inverse().inverse_operator().params();
   const auto& dz = inverse.dead_zone_inverse().params();
+  code.inverse_parameters = {
+      c_array("dead_zone_thresholds", dz.thresholds, CUnit::output,
+              "inverse dead-zone thresholds d'_i"),
+      c_array("dead_zone_weights", dz.weights, CUnit::none, "inverse dead-zone weights g'_i"),
+      c_scalar("offset", p.offset, CUnit::output, "output offset y_off"),
+      c_array("thresholds", ip.thresholds, CUnit::none, "inverse play thresholds rh_j"),
+      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
+      c_scalar("pi_offset", p.pi.offset, CUnit::none, "offset q of the PI part"),
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
   code.header += R"(
 /* Inverse parameters: S^-1 (thresholds d'_i, weights g'_i) on target - y_off, then a PI operator
    with thresholds rh_j and weights ph_j on that minus q, then the input limits. */

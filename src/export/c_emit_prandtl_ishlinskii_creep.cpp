@@ -238,6 +238,27 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   const ShapingText text = shaping_text(shaping, writer);
   CModelCode code;
   code.has_inverse = has_inverse;
+  code.sample_time = p.sample_time;
+  // The modified model's S gives the output its units; the PI part's are then S's input units.
+  const CUnit pi_unit = shaping ? CUnit::none : CUnit::output;
+  const CUnit weight_unit = shaping ? CUnit::none : CUnit::output_per_input;
+  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j"),
+                     c_array("weights", p.weights, weight_unit, "play weights p_j")};
+  if (model.lags() > 0) {
+    code.parameters.push_back(c_array("decay", model.decay(), CUnit::none,
+                                      "lag decays a_i = exp(-Ts / tau_i) at the sample time"));
+    code.parameters.push_back(c_array("creep_weights", p.creep_weights, weight_unit,
+                                      "creep weights c_ij (row i: lag, column j: play)"));
+  }
+  code.parameters.push_back(c_scalar("offset", p.offset, pi_unit, "offset of the PI with creep"));
+  if (shaping) {
+    code.parameters.push_back(c_array("dead_zone_thresholds", shaping->dead_zone.thresholds,
+                                      CUnit::none, "dead-zone thresholds d_i"));
+    code.parameters.push_back(c_array("dead_zone_weights", shaping->dead_zone.weights, CUnit::none,
+                                      "dead-zone weights g_i"));
+    code.parameters.push_back(
+        c_scalar("output_offset", shaping->offset, CUnit::output, "output offset y_off"));
+  }
   const std::size_t creep_size = std::max<std::size_t>(1, model.size() * model.lags());
   code.header = CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
                                                          {"L", std::to_string(model.lags())},
@@ -281,6 +302,21 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   const auto& ip = inverse.instantaneous_inverse().inverse_operator().params();
   const auto init = inverse.state_consistent_with(state);
   const auto initial = inverse.initial_state();
+  code.inverse_parameters = {
+      c_array("thresholds", ip.thresholds, pi_unit, "inverse play thresholds rh_j"),
+      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
+      c_array("instantaneous", model.instantaneous_weights(), weight_unit,
+              "instantaneous weights p_j + sum_i c_ij (1 - a_i)"),
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
+  if (shaping) {
+    code.inverse_parameters.push_back(c_array("dead_zone_thresholds", shaping->inverse.thresholds,
+                                              CUnit::output, "inverse dead-zone thresholds d'_i"));
+    code.inverse_parameters.push_back(c_array("dead_zone_weights", shaping->inverse.weights,
+                                              CUnit::none, "inverse dead-zone weights g'_i"));
+    code.inverse_parameters.push_back(
+        c_scalar("output_offset", shaping->offset, CUnit::output, "output offset y_off"));
+  }
   std::string inverse_shaping_values;
   if (shaping) {
     inverse_shaping_values = CWriter::fill(",\n    %D%,\n    %G%,\n    %OFF%",

@@ -399,6 +399,22 @@ CModelCode emit_c(const Preisach& preisach, const PreisachState& state, const CW
       " * numerical inverse by bracketed search on the monotone one-step-ahead output\n"
       " * (include/hyst/inverse/inverse_preisach.hpp, bracketed_search.hpp).\n";
   code.has_inverse = true;
+  // The Everett table is the model's weight distribution in the form the step uses; the level
+  // spacing only speeds up the level search and stays as exported.
+  code.parameters = {
+      c_array("thresholds", levels, CUnit::input, "threshold levels c_k"),
+      c_array("diagonal", diagonal, CUnit::output, "diagonal relay weights mu_kk"),
+      c_array("everett", table, CUnit::output, "Everett table T[a][c] at a (N + 1) + c"),
+      c_scalar("lower", everett.lower(), CUnit::input, "lowest input of the relay grid"),
+      c_scalar("upper", everett.upper(), CUnit::input, "highest input of the relay grid"),
+      c_scalar("offset", preisach.params().offset, CUnit::output, "output offset y_off"),
+      c_scalar("total", preisach.total_weight(), CUnit::output, "total relay weight F0")};
+  code.inverse_parameters = {
+      c_scalar("input_min", inverse.input_min(), CUnit::input, "lowest input returned"),
+      c_scalar("input_max", inverse.input_max(), CUnit::input, "highest input returned"),
+      c_scalar("tolerance", inverse.input_tolerance(), CUnit::input,
+               "bracket width that ends the search"),
+      c_scalar("output_tolerance", 0.0, CUnit::output, "|y - target| that ends the search")};
   code.header = CWriter::fill(
       kPreisachHeader,
       {{"N", std::to_string(n)},

@@ -23,7 +23,12 @@ std::string with_point(std::string text) {
   return text;
 }
 
-// FNV-1a, 64 bits: a stable digest of the exported text (identical exports, identical stamp).
+bool is_identifier_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+}  // namespace
+
 std::uint64_t text_digest(std::initializer_list<std::string_view> parts) {
   std::uint64_t hash = 0xcbf29ce484222325ULL;
   for (const std::string_view part : parts) {
@@ -34,12 +39,6 @@ std::uint64_t text_digest(std::initializer_list<std::string_view> parts) {
   }
   return hash;
 }
-
-bool is_identifier_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-}
-
-}  // namespace
 
 std::string CWriter::number(double value) const {
   if (std::isinf(value)) {
@@ -212,6 +211,9 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   files.header_name = writer.prefix() + ".h";
   files.source_name = writer.prefix() + ".c";
   files.has_inverse = code.has_inverse;
+  files.parameters = code.parameters;
+  files.inverse_parameters = code.inverse_parameters;
+  files.sample_time = code.sample_time;
   const std::string declarations = writer.expand(code.header);
   const std::string definitions = writer.expand(code.source);
   const std::string stamp_name = guard_base + "_EXPORT_STAMP";
@@ -255,6 +257,15 @@ static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_re
 
 )";
   ;
+}
+
+CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description) {
+  return {std::move(name), {value}, false, unit, std::move(description)};
+}
+
+CParameterField c_array(std::string name, std::span<const double> values, CUnit unit,
+                        std::string description) {
+  return {std::move(name), {values.begin(), values.end()}, true, unit, std::move(description)};
 }
 
 std::string c_output_limits(const CWriter& writer, double output_min, double output_max) {

@@ -2,11 +2,13 @@
 // The common part of the C export: number and table formatting for the chosen scalar type,
 // the substitution of the marks in C templates, the file preamble and the atomic write.
 
+#include <cstdint>
 #include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "hyst/export/c_code.hpp"
 
@@ -20,7 +22,18 @@ struct CModelCode {
   std::string header;       //!< types, sizes and prototypes
   std::string source;       //!< tables and functions
   bool has_inverse = false;
+  std::vector<CParameterField> parameters;          //!< see CCode::parameters
+  std::vector<CParameterField> inverse_parameters;  //!< see CCode::inverse_parameters
+  double sample_time = 0.0;                         //!< see CCode::sample_time
 };
+
+//! A scalar or an array field of an exported parameter struct, for CModelCode::parameters.
+CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description);
+CParameterField c_array(std::string name, std::span<const double> values, CUnit unit,
+                        std::string description);
+
+//! FNV-1a, 64 bits: a stable digest of exported text (identical exports, identical stamp).
+std::uint64_t text_digest(std::initializer_list<std::string_view> parts);
 
 //! Formats C text for one prefix and scalar type.
 class CWriter {

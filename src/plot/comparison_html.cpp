@@ -14,6 +14,7 @@
 #include "comparison_page_script.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
+#include "hyst/io/xml_text.hpp"
 
 namespace hyst::plot {
 namespace {
@@ -21,32 +22,6 @@ namespace {
 // Curves longer than this are thinned for the page (evenly spaced points): the page stays small,
 // and a loop drawn with 2000 points looks the same as one drawn with 40 000.
 constexpr std::size_t kMaxPagePoints = 2000;
-
-std::string xml_escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 //! Every stride-th sample number of n, and the last: the points a page draws.
 std::vector<std::size_t> page_samples(std::size_t n) {
@@ -112,14 +87,14 @@ std::string table(const ModelComparison& comparison) {
       html += fmt::format(
           "<tr class=\"fitted\"><td>{}</td><td>{}</td><td>{:.4g}</td><td>{:.4g}</td><td>{:.4g}"
           "</td><td>{}</td><td>{}</td><td>{:.3g}</td><td>{:.3g}</td><td>{}</td></tr>\n",
-          ++rank, xml_escaped(row.model), row.validation.nrmse_percent, row.validation.rmse,
+          ++rank, io::xml_escaped(row.model), row.validation.nrmse_percent, row.validation.rmse,
           row.validation.max_error, row.beats_yardstick ? "yes" : "no", row.parameters,
-          row.fit_seconds, row.ns_per_sample, xml_escaped(row.report->status()));
+          row.fit_seconds, row.ns_per_sample, io::xml_escaped(row.report->status()));
     } else {
       html += fmt::format(
           "<tr class=\"failed\"><td>-</td><td>{}</td><td colspan=\"7\"></td><td>failed: {}</td>"
           "</tr>\n",
-          xml_escaped(row.model), xml_escaped(row.error));
+          io::xml_escaped(row.model), io::xml_escaped(row.error));
     }
   }
   return html + "</tbody>\n</table>\n";
@@ -147,12 +122,12 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
       "Click a column header to sort the table. In the figures: drag a box to zoom, shift-drag "
       "to pan, the mouse wheel zooms, a double click resets; a legend entry shows or hides "
       "that curve in every figure.</p>\n",
-      xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
+      io::xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
       comparison.split.validation_begin, comparison.split.validation_end - 1);
   if (const auto verdict = no_fit_line(comparison); !verdict.empty()) {
-    html += fmt::format("<p id=\"no-fit\"><strong>{}</strong></p>\n", xml_escaped(verdict));
+    html += fmt::format("<p id=\"no-fit\"><strong>{}</strong></p>\n", io::xml_escaped(verdict));
   }
-  html += fmt::format("<p id=\"yardstick\">{}</p>\n", xml_escaped(yardstick_line(comparison)));
+  html += fmt::format("<p id=\"yardstick\">{}</p>\n", io::xml_escaped(yardstick_line(comparison)));
   html += table(comparison);
   html += "<pre id=\"page-errors\" hidden></pre>\n<pre id=\"selftest\" hidden></pre>\n";
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),

@@ -1344,6 +1344,39 @@ case_bad_data_files() {
 }
 
 # hyst export: the exported C (compiled with gcc) reproduces `hyst simulate` and `hyst invert`.
+case_export_fmu() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
+  # 10^6 samples of loops whose amplitude keeps changing: minor loops all the way.
+  awk 'BEGIN {
+    pi = atan2(0, -1); print "t,v"
+    for (k = 0; k < 1000000; ++k)
+      printf "%.17g,%.17g\n", k * 1e-3, 1.5 * sin(2 * pi * k / 97) * (0.6 + 0.4 * sin(2 * pi * k / 10007))
+  }' >in.csv
+  expect_ok "$HYST" export --model known.json --lang fmu --out fmus --prefix piezo \
+    --input-unit V --output-unit um --with-inverse
+  expect_stdout "wrote fmus/piezo.fmu and fmus/piezo_inverse.fmu (its inverse)" "FMI 2.0"
+  # 10^6 samples through the FMU as an importer drives it, against hyst simulate.
+  "$HYST_FMU_RUN" fmus/piezo.fmu in.csv 2 >fmu.csv 2>run.txt || fail "fmu_run: $(cat run.txt)"
+  expect_ok "$HYST" simulate --model known.json --input in.csv --out lib.csv
+  # y is at most sum of weights * 2 + 0.1 < 4: 4e-12 is 1e-12 of the output scale.
+  expect_close lib.csv 2 fmu.csv 1 4e-12
+  # The inverse FMU takes the model's output back to its input.
+  "$HYST_FMU_RUN" fmus/piezo_inverse.fmu lib.csv 2 >back.csv 2>run.txt ||
+    fail "fmu_run (inverse): $(cat run.txt)"
+  expect_close lib.csv 1 back.csv 1 1e-9
+  # Mistakes are named: --lang c options, names, a model without inverse, the compiler.
+  expect_error 1 "are for --lang fmu" -- "$HYST" export --model known.json --out c --input-unit V
+  expect_error 1 "variable name '2u'" -- "$HYST" export --model known.json --lang fmu --out f \
+    --input-name 2u
+  printf '{"model": "bouc_wen", "version": 1, "params": {"a": 1, "beta": 0.5, "gamma": 0.5, "n": 1, "stiffness": 1, "alpha_k": 0.2}}\n' >bw.json
+  expect_error 1 "has no inverse" -- "$HYST" export --model bw.json --lang fmu --out f \
+    --with-inverse
+  expect_error 1 "cannot start the C compiler './no-such-cc'" -- "$HYST" export \
+    --model known.json --lang fmu --out f --cc ./no-such-cc
+  [ ! -e f ] || fail "a failed export left $(ls f)"
+  expect_no_temporaries
+}
+
 case_export_c() {
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
   write_input_csv in.csv

@@ -1,15 +1,17 @@
 // hyst export: a model file (and its inverse) as dependency-free C code for a real-time
-// controller.
+// controller, or as an FMI 2.0 co-simulation FMU for simulation tools.
 
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
 #include "hyst/export/export_c.hpp"
+#include "hyst/export/export_fmu.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -24,11 +26,46 @@ struct ExportOptions {
   bool double_precision = false;
   double input_min = -std::numeric_limits<double>::infinity();
   double input_max = std::numeric_limits<double>::infinity();
+  // FMU only.
+  bool with_inverse = false;
+  std::string input_name = "u";
+  std::string output_name = "y";
+  std::string input_unit;
+  std::string output_unit;
+  std::string compiler;
 };
 
+void write_fmu(const ExportOptions& options, const DynamicModel& model,
+               const CExportOptions& code_options) {
+  FmuExportOptions fmu_options;
+  fmu_options.code = code_options;
+  fmu_options.inverse = options.with_inverse;
+  fmu_options.input_name = options.input_name;
+  fmu_options.output_name = options.output_name;
+  fmu_options.input_unit = options.input_unit;
+  fmu_options.output_unit = options.output_unit;
+  fmu_options.compiler = options.compiler;
+  // The file names depend on the prefix: known once the C code is generated.
+  const CCode code = generate_c(model, code_options);
+  const auto folder = std::filesystem::path(options.out);
+  const std::string prefix = code.header_name.substr(0, code.header_name.size() - 2);
+  std::vector<io::NamedPath> outputs{{folder / (prefix + ".fmu"), "--out"}};
+  if (options.with_inverse) outputs.push_back({folder / (prefix + "_inverse.fmu"), "--out"});
+  io::check_outputs({{options.model, "--model"}}, outputs);
+  const FmuFiles files = export_fmu(model, folder, fmu_options);
+  fmt::print(
+      "wrote {}{}: FMI 2.0 co-simulation, the {} model in {}\n", files.model.string(),
+      files.inverse.empty() ? "" : fmt::format(" and {} (its inverse)", files.inverse.string()),
+      model.name(), options.single ? "float" : "double");
+}
+
 void run(const ExportOptions& options) {
-  if (options.lang != "c") {
-    throw Error(fmt::format("--lang '{}' is not supported (only c)", options.lang));
+  if (options.lang != "c" && options.lang != "fmu") {
+    throw Error(fmt::format("--lang '{}' is not supported (c or fmu)", options.lang));
+  }
+  if (options.lang == "c" && (options.with_inverse || !options.input_unit.empty() ||
+                              !options.output_unit.empty() || !options.compiler.empty())) {
+    throw Error("--with-inverse, --input-unit, --output-unit and --cc are for --lang fmu");
   }
   if (options.single && options.double_precision) {
     throw Error("--float and --double exclude each other: choose one scalar type");
@@ -44,6 +81,14 @@ void run(const ExportOptions& options) {
   export_options.scalar = options.single ? CScalar::single_precision : CScalar::double_precision;
   export_options.limits = {options.input_min, options.input_max};
   export_options.source = std::filesystem::path(options.model).filename().string();
+  if (options.lang == "fmu") {
+    try {
+      write_fmu(options, *model, export_options);
+    } catch (const Error& error) {
+      throw Error(fmt::format("{}: {}", options.model, error.what()));
+    }
+    return;
+  }
   CCode code;
   try {
     // The file names depend on the prefix: known once the code is generated.
@@ -66,12 +111,15 @@ void run(const ExportOptions& options) {
 void add_export_command(CLI::App& app) {
   auto options = std::make_shared<ExportOptions>();
   auto* command = app.add_subcommand(
-      "export", "Write a model (and its inverse) as dependency-free C99 code for a controller.");
+      "export",
+      "Write a model (and its inverse) as dependency-free C99 code for a controller, or as an "
+      "FMI 2.0 co-simulation FMU for simulation tools.");
   command->add_option("--model", options->model, "Model file (JSON)")->required();
-  command->add_option("--lang", options->lang, "Target language (c)")->capture_default_str();
+  command->add_option("--lang", options->lang, "c (C99 sources) or fmu (FMI 2.0 co-simulation)")
+      ->capture_default_str();
   command
       ->add_option("--out", options->out,
-                   "Output folder for <prefix>.h and .c (created when missing)")
+                   "Output folder for <prefix>.h and .c, or <prefix>.fmu (created when missing)")
       ->required();
   command->add_option("--prefix", options->prefix,
                       "Prefix of the C names and files (default: hyst_<model>)");
@@ -81,11 +129,27 @@ void add_export_command(CLI::App& app) {
                       "Lowest input the inverse may return (default: none)");
   command->add_option("--input-max", options->input_max,
                       "Highest input the inverse may return (default: none)");
-  command->footer(R"(Example:
+  command->add_flag("--with-inverse", options->with_inverse,
+                    "FMU: also write the inverse compensator's FMU, <prefix>_inverse.fmu");
+  command->add_option("--input-name", options->input_name, "FMU: the input variable's name")
+      ->capture_default_str();
+  command->add_option("--output-name", options->output_name, "FMU: the output variable's name")
+      ->capture_default_str();
+  command->add_option("--input-unit", options->input_unit, "FMU: the input's unit, e.g. V");
+  command->add_option("--output-unit", options->output_unit, "FMU: the output's unit, e.g. um");
+  command->add_option("--cc", options->compiler,
+                      "FMU: the C compiler that builds its binary (default: $CC, else cc)");
+  command->footer(R"(Examples:
   hyst export --model m.json --lang c --out ctrl/ --prefix piezo
       writes ctrl/piezo.h and ctrl/piezo.c: piezo_PARAMS, piezo_init/reset/step and, when the
       model has an inverse, piezo_inverse_init/reset/step. Supported models: pi, gpi,
-      modified_pi, preisach, bouc_wen. The code needs only <math.h> (link with -lm).)");
+      modified_pi, preisach, bouc_wen, pi_creep, modified_pi_creep. The code needs only
+      <math.h> (link with -lm).
+  hyst export --model m.json --lang fmu --out fmus/ --prefix piezo --input-unit V \
+      --output-unit um --with-inverse
+      writes fmus/piezo.fmu and fmus/piezo_inverse.fmu (FMI 2.0 co-simulation, linux64 binary
+      built with the C compiler of this machine): input u, output y, the fitted values as
+      parameters.)");
   command->callback([options] { run(*options); });
 }
 
