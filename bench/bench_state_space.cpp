@@ -27,9 +27,12 @@ Eigen::MatrixXd random_matrix(Eigen::Index rows, Eigen::Index cols, std::mt19937
   return m;
 }
 
-// A stable model with a dense A: damped 2x2 rotations on the diagonal (poles r e^(+-j theta),
-// r in [0.9, 0.999]), then a random orthogonal similarity, which keeps the poles.
-hyst::StateSpace make_model(Eigen::Index inputs = kChannels, Eigen::Index outputs = kChannels) {
+// A stable model: damped 2x2 rotations on the diagonal (poles r e^(+-j theta), r in [0.9, 0.999]),
+// the real modal form that fit_state_space() returns, or (dense) after a random orthogonal
+// similarity, which keeps the poles.
+enum class Form { modal, dense };
+hyst::StateSpace make_model(Form form, Eigen::Index inputs = kChannels,
+                            Eigen::Index outputs = kChannels) {
   std::mt19937_64 random(1);
   std::uniform_real_distribution<double> radius(0.9, 0.999);
   std::uniform_real_distribution<double> angle(0.05, 3.0);
@@ -39,7 +42,8 @@ hyst::StateSpace make_model(Eigen::Index inputs = kChannels, Eigen::Index output
     const double t = angle(random);
     blocks.block(i, i, 2, 2) << r * std::cos(t), -r * std::sin(t), r * std::sin(t), r * std::cos(t);
   }
-  const Eigen::MatrixXd q = random_matrix(kOrder, kOrder, random).householderQr().householderQ();
+  Eigen::MatrixXd q = random_matrix(kOrder, kOrder, random).householderQr().householderQ();
+  if (form == Form::modal) q.setIdentity();
   return hyst::StateSpace({q * blocks * q.transpose(), random_matrix(kOrder, inputs, random),
                            random_matrix(outputs, kOrder, random),
                            random_matrix(outputs, inputs, random), 1e-4});
@@ -62,13 +66,17 @@ void run_steps(const Model& model, benchmark::State& bench) {
 }
 
 void BM_StateSpaceStep(benchmark::State& bench) {
-  run_steps(make_model(), bench);
+  run_steps(make_model(Form::dense), bench);
+}
+
+void BM_StateSpaceStepModal(benchmark::State& bench) {
+  run_steps(make_model(Form::modal), bench);
 }
 
 // The linear block with 3 more inputs (w) and outputs (z), weak feedback gains (a stable loop),
 // no Dzw; a PI model of 16 plays (thresholds 0 .. 1.5) in each channel.
-hyst::HystereticLfr<hyst::PrandtlIshlinskii> make_lfr() {
-  auto params = make_model(2 * kChannels, 2 * kChannels).params();
+hyst::HystereticLfr<hyst::PrandtlIshlinskii> make_lfr(Form form) {
+  auto params = make_model(form, 2 * kChannels, 2 * kChannels).params();
   params.b.rightCols(kChannels) *= 0.01;
   params.d.rightCols(kChannels) *= 0.01;
   params.d.bottomRightCorner(kChannels, kChannels).setZero();
@@ -82,10 +90,16 @@ hyst::HystereticLfr<hyst::PrandtlIshlinskii> make_lfr() {
 }
 
 void BM_HystereticLfrStep(benchmark::State& bench) {
-  run_steps(make_lfr(), bench);
+  run_steps(make_lfr(Form::dense), bench);
+}
+
+void BM_HystereticLfrStepModal(benchmark::State& bench) {
+  run_steps(make_lfr(Form::modal), bench);
 }
 
 }  // namespace
 
 BENCHMARK(BM_StateSpaceStep);
+BENCHMARK(BM_StateSpaceStepModal);
 BENCHMARK(BM_HystereticLfrStep);
+BENCHMARK(BM_HystereticLfrStepModal);

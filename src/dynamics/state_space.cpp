@@ -147,11 +147,16 @@ void solve_shifted_hessenberg(const Eigen::MatrixXcd& h, Complex z, Eigen::Matri
   work.triangularView<Eigen::Upper>().solveInPlace(r);
 }
 
+// The parameters once validate() has taken them (before StateTransition reads A).
+StateSpace::Params validated(StateSpace::Params params) {
+  validate(params);
+  return params;
+}
+
 }  // namespace
 
-StateSpace::StateSpace(Params params) : params_(std::move(params)) {
-  validate(params_);
-}
+StateSpace::StateSpace(Params params)
+    : params_(validated(std::move(params))), transition_(params_.a) {}
 
 StateSpace StateSpace::from_continuous(const Eigen::MatrixXd& ac, const Eigen::MatrixXd& bc,
                                        const Eigen::MatrixXd& c, const Eigen::MatrixXd& d,
@@ -206,7 +211,7 @@ void StateSpace::step(State& state, std::span<const double> input,
   y.noalias() = p.c * state.x;
   y.noalias() += p.d * u;
   // The next state goes to scratch first: A x reads every entry of x while it is written.
-  state.scratch.noalias() = p.a * state.x;
+  transition_.apply(state.x, state.scratch);
   state.scratch.noalias() += p.b * u;
   state.x.swap(state.scratch);
 }

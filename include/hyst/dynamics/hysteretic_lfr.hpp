@@ -150,7 +150,7 @@ class HystereticLfr {
     y.noalias() = m_.c_y * state.x;
     y.noalias() += m_.d_yu * u;
     y.noalias() += m_.d_yw * state.w;
-    state.next.noalias() = m_.a * state.x;
+    linear_.transition().apply(state.x, state.next);
     state.next.noalias() += m_.b_u * u;
     state.next.noalias() += m_.b_w * state.w;
     state.x.swap(state.next);

@@ -21,6 +21,8 @@
 
 #include <Eigen/Dense>
 
+#include "hyst/dynamics/state_transition.hpp"
+
 namespace hyst {
 
 class StateSpace {
@@ -49,6 +51,8 @@ class StateSpace {
                                     const Eigen::MatrixXd& c, const Eigen::MatrixXd& d,
                                     double sample_time);
 
+  //! A x as step() computes it (block by block when A is in real modal form).
+  const StateTransition& transition() const { return transition_; }
   const Params& params() const { return params_; }
   std::size_t order() const { return static_cast<std::size_t>(params_.a.rows()); }
   std::size_t inputs() const { return static_cast<std::size_t>(params_.b.cols()); }
@@ -94,6 +98,7 @@ class StateSpace {
 
  private:
   Params params_;
+  StateTransition transition_;  // A x of step(), cheap in real modal form
 };
 
 }  // namespace hyst
