@@ -25,7 +25,7 @@ DEBIAN_PACKAGES := cmake make gcc g++ pkg-config \
   libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libmatio-dev zlib1g-dev libzip-dev libpugixml-dev nlohmann-json3-dev libcli11-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libboost-dev \
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-mypy python3-matplotlib \
-  python3-nbclient python3-nbformat python3-ipykernel python3-tqdm gnuplot-nox \
+  python3-nbclient python3-nbformat python3-ipykernel python3-tqdm python3-distributed gnuplot-nox \
   libjs-chart.js clang libclang-rt-14-dev chromium
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -75,7 +75,11 @@ test-python: build
 bench-smoke:
 	@set -e; for b in $(BUILD)/bench/bench_*; do \
 	  echo "== $$b"; $$b --benchmark_min_time=0.001 > /dev/null; \
-	done; echo "benchmarks ran"
+	done; \
+	echo "== bench/batch_throughput.py"; \
+	PYTHONPATH=$(BUILD)/python /usr/bin/python3 bench/batch_throughput.py --cases pi:300:10 \
+	  > /dev/null; \
+	echo "benchmarks ran"
 
 check-build: deps
 	CXX=clang++ cmake -S . -B $(CHECK_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \

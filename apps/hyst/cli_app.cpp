@@ -68,6 +68,7 @@ int parse_and_run(int argc, const char* const* argv) {
   hyst data info RMN_TRAP_SLOW.dat              tables, columns, units, reversals, cycles
   hyst fit-system --order 28 --sample-time 1.5625e-4 --input-npy u.npy --output-npy y.npy --out s.json
   hyst evaluate --model s.json --input-npy u_test.npy --output-npy y_test.npy --periodic
+  hyst batch fit --model pi --data 'd/*.csv' --input v --output y --out fits/   one fit per record (Dask)
 Run 'hyst <command> --help' for the options of a command.
 Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: error: ...' on stderr.)");
 
@@ -83,6 +84,7 @@ Exit status: 0 success, 1 failure, 2 usage error; errors are one line 'hyst: err
   add_compare_command(app);
   add_fit_system_command(app);
   add_evaluate_command(app);
+  add_batch_command(app);
 
   try {
     app.parse(argc, argv);

@@ -94,6 +94,10 @@ pi = hyst.PrandtlIshlinskii([0.0, 0.5], [1.0, 0.5])
 y = pi.simulate(v, pi.initial_state())
 grid = hyst.signals.TimeGrid(100, 1e-3)
 table = io.read_csv("x.csv")
+import hyst.batch
+rows = hyst.batch.fit("d/*.csv", "pi", input="v", output="y", out="fits", workers=0,
+                      options={"operators": 12})
+seconds: float = rows[0].seconds
 """)
     assert right.returncode == 0, right.stdout + right.stderr
     wrong = mypy(tmp_path, """
@@ -101,8 +105,21 @@ import hyst
 hyst.fit(1, [0.0], [0.0])
 hyst.signals.TimeGrid(0.5)
 text: str = hyst.PrandtlIshlinskii([0.0], [1.0]).initial_state()
+import hyst.batch
+hyst.batch.fit("d/*.csv", "pi", input=1, output="y", out="fits")
 """)
     assert wrong.returncode == 1
     assert 'Argument 1 to "fit" has incompatible type "int"; expected "str"' in wrong.stdout
     assert 'Argument 1 to "TimeGrid" has incompatible type "float"; expected "int"' in wrong.stdout
     assert 'has type "State"' in wrong.stdout, wrong.stdout
+    assert 'Argument "input" to "fit" has incompatible type "int"; expected "str"' in wrong.stdout
+
+
+def test_the_batch_module_is_typed(tmp_path):
+    """hyst.batch is plain Python: its own annotations are what mypy reads, so they must hold."""
+    pytest.importorskip("mypy")
+    environment = dict(os.environ, PYTHONPATH=str(PACKAGE.parent))
+    result = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "cache"),
+                             "--disallow-untyped-defs", "-m", "hyst.batch"],
+                            capture_output=True, text=True, env=environment, check=False)
+    assert result.returncode == 0, result.stdout + result.stderr

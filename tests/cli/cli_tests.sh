@@ -196,7 +196,7 @@ case_help() {
   expect_ok "$HYST" --help
   expect_stdout "Example" "models" "simulate" "fit" "invert" "plot" "info"
   local command
-  for command in models simulate fit invert plot info; do
+  for command in models simulate fit invert plot info batch; do
     expect_ok "$HYST" "$command" --help
     expect_stdout "Example" "hyst $command"
   done
@@ -1459,6 +1459,62 @@ case_out_of_memory() {
     bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$HYST" fit pi --data r.csv --input v --output y \
     --out m.json --resample input-grid:1.5e-6
   [ ! -e m.json ] || fail "m.json was written by a failed fit"
+}
+
+# hyst batch fit (python/hyst/batch.py on Dask): a model file per record and the tables, a broken
+# record listed with its reason while the others are fitted, and clear errors. Skipped (77) only
+# without python3-distributed.
+case_batch_fit() {
+  expect_ok "$HYST" batch --help
+  expect_stdout "hyst batch fit --model pi" "Dask" "HYST_PYTHONPATH" "docs/scaling.md"
+  if ! /usr/bin/python3 -c "import distributed" 2>/dev/null; then
+    echo "batch_fit: skipped: python3-distributed is not installed" >&2
+    exit 77
+  fi
+  expect_ok "$HYST" batch fit --help
+  expect_stdout "usage: hyst batch fit" "--scheduler ADDRESS" "--workers" "Exit status"
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
+  mkdir records
+  local k
+  for k in 1 2 3; do
+    write_input_csv in.csv $((400 * k))
+    expect_ok "$HYST" simulate --model known.json --input in.csv --out "records/r$k.csv"
+  done
+  printf 'v,y\n0,0\n0.5,abc\n' >records/broken.csv
+  run "$HYST" batch fit --model pi --data 'records/*.csv' --input v --output y --out fits/ \
+    --option "thresholds=$KNOWN_THRESHOLDS"
+  [ "$STATUS" -eq 0 ] || fail "batch fit: exit status $STATUS, expected 0"
+  expect_stdout "3 of 4 records fitted, 1 failed" "wrote 3 model files in fits/"
+  [ "$(wc -l <"$WORK/stderr")" -eq 1 ] &&
+    grep -q "^hyst: warning: records/broken.csv failed: .*broken.csv:3" "$WORK/stderr" ||
+    { fail "expected one warning naming records/broken.csv line 3"; show batch fit; }
+  for k in 1 2 3; do
+    [ -s "fits/r$k.json" ] || fail "fits/r$k.json was not written"
+  done
+  [ ! -e fits/broken.json ] || fail "a model file was written for the broken record"
+  expect_ok "$HYST" info fits/r2.json
+  expect_stdout "model:      pi" '"created_by": "hyst batch fit"' '"file": "records/r2.csv"'
+  [ "$(head -1 fits/batch.csv)" = "record,status,fit_status,nrmse_percent,parameters,seconds,model_file,reason" ] ||
+    fail "fits/batch.csv header: $(head -1 fits/batch.csv)"
+  # The known weights are fitted back: NRMSE ~ 0 for every record but the broken one.
+  awk -F, 'NR > 1 && $1 != "records/broken.csv" && !($2 == "ok" && $4 < 1e-6 && $7 ~ /^r[123].json$/) { bad = bad " " $0 }
+           NR > 1 && $1 == "records/broken.csv" && $2 != "failed" { bad = bad " " $0 }
+           END { if (NR != 5 || bad != "") { print "rows:" bad; exit 1 } }' fits/batch.csv ||
+    fail "fits/batch.csv: $(cat fits/batch.csv)"
+  grep -q '^| records/r1.csv | ok | converged | ' fits/batch.md || fail "fits/batch.md: $(cat fits/batch.md)"
+  expect_no_temporaries
+
+  expect_error 1 "records 'none/*.csv': the pattern matches no file" -- \
+    "$HYST" batch fit --model pi --data 'none/*.csv' --input v --output y --out x/
+  expect_error 1 "cannot connect to the Dask scheduler at 'tcp://127.0.0.1:9'" -- \
+    "$HYST" batch fit --model pi --data 'records/*.csv' --input v --output y --out x/ \
+    --scheduler tcp://127.0.0.1:9 --timeout 1
+  expect_error 1 "no record was fitted (1 failed" "records/r1.csv: no column 'z' (columns: v, y)" -- \
+    "$HYST" batch fit --model pi --data records/r1.csv --input v --output z --out x/ --workers 0
+  expect_error 2 "the following arguments are required: --input" "see 'hyst batch fit --help'" -- \
+    "$HYST" batch fit --model pi --data records/r1.csv --output y --out x/
+  expect_error 1 "no folder of HYST_PYTHONPATH='$WORK/none' holds the Python package hyst" -- \
+    env HYST_PYTHONPATH="$WORK/none" "$HYST" batch fit --help
 }
 
 # --- main -------------------------------------------------------------------------------------

@@ -34,7 +34,7 @@ wheel = zipfile.ZipFile(sys.argv[1])
 names = wheel.namelist()
 record = next(n for n in names if n.endswith(".dist-info/RECORD"))
 assert any(n.startswith("hyst/_core.") and n.endswith(".so") for n in names), names
-assert "hyst/__init__.py" in names, names
+assert {"hyst/__init__.py", "hyst/batch.py"} <= set(names), names
 assert {"hyst/__init__.pyi", "hyst/io.pyi", "hyst/py.typed"} <= set(names), names
 for line in wheel.read(record).decode().splitlines():
     name, digest, size = line.split(",")
@@ -56,6 +56,8 @@ case "$location" in
 esac
 "$python" "$checkout/examples/02_fit_pi.py" >example.log 2>&1 ||
   { cat example.log; fail "example 02 failed with the installed module"; }
+"$python" -m hyst.batch fit --help >batch.log 2>&1 ||
+  { cat batch.log; fail "python -m hyst.batch failed with the installed module"; }
 "$python" -m pip uninstall -y hyst >/dev/null || fail "pip uninstall failed"
 ! "$python" -c "import hyst" 2>/dev/null || fail "hyst still importable after uninstall"
-echo "pip wheel, pip install, example 02 and pip uninstall in a venv: ok"
+echo "pip wheel, pip install, example 02, hyst.batch and pip uninstall in a venv: ok"

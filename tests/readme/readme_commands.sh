@@ -58,7 +58,7 @@ fi
 # What the README says the commands write.
 for file in m.json m10.json fit.txt v.csv y.csv v_back.csv ctrl/piezo.h ctrl/piezo.c loop.png \
   r.csv o.csv results/comparison.md p.csv p.json creep.json b.json strain.csv v_strain.csv \
-  forc.json forc.txt cmp/ranking.md venv/bin/python; do
+  forc.json forc.txt cmp/ranking.md venv/bin/python fits/a250.json fits/batch.md; do
   [ -s "$file" ] || { echo "FAIL: the README's commands did not write $file"; exit 1; }
 done
 grep -q "NRMSE" fit.txt || { echo "FAIL: fit.txt has no NRMSE"; exit 1; }

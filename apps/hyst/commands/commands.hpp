@@ -32,6 +32,7 @@ void add_export_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
 void add_fit_system_command(CLI::App& app);
+void add_batch_command(CLI::App& app);
 
 //! Text on one line: line breaks (and tabs) become single spaces, trailing space removed. Every
 //! message of the command line goes through this, so that each is exactly one line.
