@@ -43,6 +43,7 @@ LfrMatrices::LfrMatrices(const StateSpace& linear, std::size_t inputs, std::size
   d_yu = p.d.topLeftCorner(outputs, m);
   d_yw = p.d.topRightCorner(outputs, q);
   d_zu = p.d.bottomLeftCorner(q, m);
+  d_u = p.d.leftCols(m);
 }
 
 namespace lfr_detail {

@@ -41,6 +41,7 @@ struct LfrMatrices {
   LfrMatrices(const StateSpace& linear, std::size_t inputs, std::size_t feedback);
 
   Eigen::MatrixXd a, b_u, b_w, c_y, c_z, d_yu, d_yw, d_zu;
+  Eigen::MatrixXd d_u;  //!< [Dyu; Dzu], D's columns of u
 };
 
 //! How the periodic steady state of a nonlinear loop is found (HystereticLfr::periodic_state).
@@ -75,8 +76,9 @@ class HystereticLfr {
     Eigen::VectorXd x;                        //!< the linear block's state (n)
     std::vector<typename H::State> feedback;  //!< each hysteresis model's memory (q)
     Eigen::VectorXd next;                     //!< scratch: the next x while it is computed
-    Eigen::VectorXd z;                        //!< scratch: the hysteresis inputs
-    Eigen::VectorXd w;                        //!< the hysteresis outputs of the last step
+    Eigen::VectorXd response;  //!< scratch: C x + D [u; 0], i.e. y without w's term, then z
+    Eigen::VectorXd drive;     //!< scratch: the linear block's inputs [u; w]
+    Eigen::VectorXd w;         //!< the hysteresis outputs of the last step
   };
 
   //! `linear` has inputs + feedback.size() inputs (u, then w) and more than feedback.size()
@@ -130,7 +132,12 @@ class HystereticLfr {
   State make_state(const Eigen::VectorXd& x, std::vector<typename H::State> feedback) const {
     lfr_detail::require_state(x, order(), feedback.size(), feedback_.size());
     const auto q = Eigen::Index(feedback_.size());
-    return State{x, std::move(feedback), Eigen::VectorXd::Zero(x.size()), Eigen::VectorXd::Zero(q),
+    const auto& linear = linear_.params();
+    return State{x,
+                 std::move(feedback),
+                 Eigen::VectorXd::Zero(x.size()),
+                 Eigen::VectorXd::Zero(linear.c.rows()),
+                 Eigen::VectorXd::Zero(linear.b.cols()),
                  Eigen::VectorXd::Zero(q)};
   }
 
@@ -143,16 +150,23 @@ class HystereticLfr {
     HYST_ASSERT(state.feedback.size() == feedback_.size(), "step() needs a state of this model");
     const Eigen::Map<const Eigen::VectorXd> u(input.data(), Eigen::Index(input.size()));
     Eigen::Map<Eigen::VectorXd> y(output.data(), Eigen::Index(output.size()));
-    state.z.noalias() = m_.c_z * state.x;
-    state.z.noalias() += m_.d_zu * u;
-    for (std::size_t i = 0; i < feedback_.size(); ++i)
-      state.w[Eigen::Index(i)] = feedback_[i].step(state.feedback[i], state.z[Eigen::Index(i)]);
-    y.noalias() = m_.c_y * state.x;
-    y.noalias() += m_.d_yu * u;
+    const auto& linear = linear_.params();
+    const auto m = Eigen::Index(inputs_);
+    const auto p = Eigen::Index(outputs());
+    const auto q = Eigen::Index(feedback_.size());
+    // Four products with the whole C, D's u columns, Dyw and the whole B rather than seven with
+    // their blocks: at these sizes each product's fixed cost outweighs its arithmetic.
+    state.response.noalias() = linear.c * state.x;
+    state.response.noalias() += m_.d_u * u;
+    for (Eigen::Index i = 0; i < q; ++i)
+      state.w[i] =
+          feedback_[std::size_t(i)].step(state.feedback[std::size_t(i)], state.response[p + i]);
+    y = state.response.head(p);
     y.noalias() += m_.d_yw * state.w;
+    state.drive.head(m) = u;
+    state.drive.tail(q) = state.w;
     linear_.transition().apply(state.x, state.next);
-    state.next.noalias() += m_.b_u * u;
-    state.next.noalias() += m_.b_w * state.w;
+    state.next.noalias() += linear.b * state.drive;
     state.x.swap(state.next);
   }
 
