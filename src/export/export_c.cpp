@@ -11,17 +11,20 @@
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst {
-namespace {
+namespace {}  // namespace
 
-std::string checked_prefix(const CExportOptions& options, std::string_view model) {
-  const std::string prefix =
-      options.prefix.empty() ? fmt::format("hyst_{}", model) : options.prefix;
-  const bool starts_well =
-      std::isalpha(static_cast<unsigned char>(prefix.front())) != 0 || prefix.front() == '_';
-  bool identifier = starts_well;
-  for (const char c : prefix)
+bool is_c_identifier(std::string_view name) {
+  bool identifier = !name.empty() && (std::isalpha(static_cast<unsigned char>(name.front())) != 0 ||
+                                      name.front() == '_');
+  for (const char c : name)
     identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_');
-  if (!identifier) {
+  return identifier;
+}
+
+std::string c_export_prefix(const DynamicModel& model, const CExportOptions& options) {
+  const std::string prefix =
+      options.prefix.empty() ? fmt::format("hyst_{}", model.name()) : options.prefix;
+  if (!is_c_identifier(prefix)) {
     throw Error(fmt::format("C export prefix '{}' must be a C identifier (letters, digits and '_', "
                             "not starting with a digit)",
                             prefix),
@@ -30,14 +33,12 @@ std::string checked_prefix(const CExportOptions& options, std::string_view model
   return prefix;
 }
 
-}  // namespace
-
 CCode generate_c(const DynamicModel& model, const CExportOptions& options) {
   // The model's entry provides its C code; the supported models are the entries that do.
   const auto& registry = ModelRegistry::builtin();
   if (const auto* entry = registry.find_if_known(model.name()); entry && entry->can_export_c()) {
     CExportOptions checked = options;
-    checked.prefix = checked_prefix(options, model.name());
+    checked.prefix = c_export_prefix(model, options);
     return entry->c_code(model, checked);
   }
   std::string names;

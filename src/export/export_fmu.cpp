@@ -105,7 +105,7 @@ FmuFiles export_fmu(const DynamicModel& model, const std::filesystem::path& fold
                             model.name()),
                 "inverse");
   }
-  const std::string prefix = code.header_name.substr(0, code.header_name.size() - 2);
+  const std::string prefix = c_export_prefix(model, options.code);
   detail::FmuUnit unit;
   unit.identifier = prefix;
   unit.code = &code;

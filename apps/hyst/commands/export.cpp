@@ -45,10 +45,8 @@ void write_fmu(const ExportOptions& options, const DynamicModel& model,
   fmu_options.input_unit = options.input_unit;
   fmu_options.output_unit = options.output_unit;
   fmu_options.compiler = options.compiler;
-  // The file names depend on the prefix: known once the C code is generated.
-  const CCode code = generate_c(model, code_options);
   const auto folder = std::filesystem::path(options.out);
-  const std::string prefix = code.header_name.substr(0, code.header_name.size() - 2);
+  const std::string prefix = c_export_prefix(model, code_options);
   std::vector<io::NamedPath> outputs{{folder / (prefix + ".fmu"), "--out"}};
   if (options.with_inverse) outputs.push_back({folder / (prefix + "_inverse.fmu"), "--out"});
   io::check_outputs({{options.model, "--model"}}, outputs);

@@ -31,11 +31,20 @@
 //! Sources: the model headers named in the generated files.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "hyst/export/c_code.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
 namespace hyst {
+
+//! Whether `name` is a C identifier: a letter or '_', then letters, digits and '_'.
+bool is_c_identifier(std::string_view name);
+
+//! The prefix of the export's names and files: options.prefix, or "hyst_" + the model's name.
+//! Throws hyst::Error (field "prefix") when it is not a C identifier.
+std::string c_export_prefix(const DynamicModel& model, const CExportOptions& options);
 
 //! Generates the C code of `model` in its current state. Throws hyst::Error naming the model for
 //! an unsupported model ("C export: the model 'kp' is not supported (supported: ...)") and for a
