@@ -47,4 +47,20 @@ void StateTransition::apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) cons
   }
 }
 
+void StateTransition::apply_rows(const Eigen::MatrixXd& x, Eigen::MatrixXd& out) const noexcept {
+  if (!block_diagonal()) {
+    out.noalias() = x * dense_.transpose();
+    return;
+  }
+  for (const Block& block : blocks_) {
+    const Index i = block.at;
+    if (block.size == 1) {
+      out.col(i) = block.a00 * x.col(i);
+    } else {
+      out.col(i) = block.a00 * x.col(i) + block.a01 * x.col(i + 1);
+      out.col(i + 1) = block.a10 * x.col(i) + block.a11 * x.col(i + 1);
+    }
+  }
+}
+
 }  // namespace hyst

@@ -47,6 +47,18 @@ void expect_same_product(const Eigen::MatrixXd& a, bool block_path) {
   const Eigen::VectorXd expected = a * x;
   for (Eigen::Index i = 0; i < a.rows(); ++i)
     EXPECT_NEAR(out[i], expected[i], 1e-15 * (1.0 + std::abs(expected[i]))) << i;
+  // The same on every row of a matrix: X A^T.
+  Eigen::MatrixXd rows(5, a.rows());
+  for (Eigen::Index r = 0; r < rows.rows(); ++r)
+    rows.row(r) = random_vector(a.rows(), 10 + unsigned(r)).transpose();
+  Eigen::MatrixXd rows_out(rows.rows(), rows.cols());
+  transition.apply_rows(rows, rows_out);
+  const Eigen::MatrixXd rows_expected = rows * a.transpose();
+  for (Eigen::Index r = 0; r < rows.rows(); ++r)
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      EXPECT_NEAR(rows_out(r, i), rows_expected(r, i),
+                  1e-15 * (1.0 + std::abs(rows_expected(r, i))))
+          << r << ", " << i;
 }
 
 TEST(StateTransition, RealModalFormTakesTheBlockPath) {

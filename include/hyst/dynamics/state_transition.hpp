@@ -18,6 +18,10 @@ class StateTransition {
   //! out = A x; `out` has the size of x and is another vector. No allocation.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const noexcept;
 
+  //! out = X A^T: A applied to every row of X (each row a vector of the state's size, such as the
+  //! state's derivative by one parameter); `out` has the size of X and is another matrix.
+  void apply_rows(const Eigen::MatrixXd& x, Eigen::MatrixXd& out) const noexcept;
+
   //! Whether A was found block diagonal (blocks of size 1 or 2).
   bool block_diagonal() const { return dense_.size() == 0; }
 
