@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/dynamics/best_linear_approximation.hpp"
+#include "hyst/dynamics/fit_hammerstein.hpp"
 #include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
@@ -117,6 +118,38 @@ py::dict evaluate_model(const Model& model, const AnyArray& input, const AnyArra
     return score_model(model, u, y, {periodic, transient});
   }();
   return score_dict(score);
+}
+
+// A fit of a model with hysteresis from a linear model (fit_hysteretic_lfr, fit_hammerstein),
+// run without the GIL; it returns (HystereticLfr, FitReport).
+template <typename Options, typename Fit>
+void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const char* doc) {
+  const Options defaults;
+  module.def(
+      name,
+      [fit](const StateSpace& linear, const py::sequence& experiments, const std::string& layout,
+            const std::vector<double>& threshold_fractions, bool fit_poles, bool fit_io_matrices,
+            double max_pole_radius, std::size_t max_iterations, std::size_t threads,
+            const py::object& progress) {
+        const auto data = experiments_of(experiments, layout);
+        const Options options{.threshold_fractions = threshold_fractions,
+                              .max_iterations = max_iterations,
+                              .threads = threads,
+                              .fit_poles = fit_poles,
+                              .fit_io_matrices = fit_io_matrices,
+                              .max_pole_radius = max_pole_radius,
+                              .progress = progress_callback(progress)};
+        auto result = [&] {
+          py::gil_scoped_release release;
+          return fit(linear, data, options);
+        }();
+        return py::make_tuple(any_hysteretic_lfr(result.model), std::move(result.report));
+      },
+      "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
+      "threshold_fractions"_a = defaults.threshold_fractions, "fit_poles"_a = defaults.fit_poles,
+      "fit_io_matrices"_a = defaults.fit_io_matrices,
+      "max_pole_radius"_a = defaults.max_pole_radius, "max_iterations"_a = defaults.max_iterations,
+      "threads"_a = defaults.threads, "progress"_a = py::none(), doc);
 }
 
 }  // namespace
@@ -309,33 +342,22 @@ void bind_dynamics(py::module_& module) {
       [](const std::filesystem::path& path) { return load_hysteretic_lfr(path).model; }, "path"_a,
       "Reads a hysteretic LFR model file.");
 
-  module.def(
-      "fit_hysteretic_lfr",
-      [](const StateSpace& linear, const py::sequence& experiments, const std::string& layout,
-         const std::vector<double>& threshold_fractions, bool fit_poles, double max_pole_radius,
-         std::size_t max_iterations, std::size_t threads, const py::object& progress) {
-        const auto data = experiments_of(experiments, layout);
-        HystereticLfrFitOptions options;
-        options.threshold_fractions = threshold_fractions;
-        options.fit_poles = fit_poles;
-        options.max_pole_radius = max_pole_radius;
-        options.max_iterations = max_iterations;
-        options.threads = threads;
-        options.progress = progress_callback(progress);
-        auto fit = [&] {
-          py::gil_scoped_release release;
-          return fit_hysteretic_lfr(linear, data, options);
-        }();
-        return py::make_tuple(any_hysteretic_lfr(fit.model), std::move(fit.report));
-      },
-      "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
-      "threshold_fractions"_a = HystereticLfrFitOptions{}.threshold_fractions, "fit_poles"_a = true,
-      "max_pole_radius"_a = HystereticLfrFitOptions{}.max_pole_radius,
-      "max_iterations"_a = HystereticLfrFitOptions{}.max_iterations,
-      "threads"_a = HystereticLfrFitOptions{}.threads, "progress"_a = py::none(),
+  def_hysteresis_fit<HystereticLfrFitOptions>(
+      module, "fit_hysteretic_lfr",
+      [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,
+         const HystereticLfrFitOptions& o) { return fit_hysteretic_lfr(l, x, o); },
       "A hysteretic LFR fitted from a linear model on the simulation error of periodic "
       "experiments (a sequence of (input, output) arrays whose axes `layout` names): a PI model "
-      "per output in the feedback; returns (HystereticLfr, FitReport).");
+      "per output in the feedback, jointly with the linear block's poles (fit_poles) and B, C, D "
+      "(fit_io_matrices); returns (HystereticLfr, FitReport).");
+  def_hysteresis_fit<HammersteinFitOptions>(
+      module, "fit_hammerstein",
+      [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,
+         const HammersteinFitOptions& o) { return fit_hammerstein(l, x, o); },
+      "A Hammerstein system (a PI model per input ahead of the linear block) fitted from a linear "
+      "model on the simulation error of periodic experiments, jointly with the linear block's "
+      "poles (fit_poles) and B, C, D (fit_io_matrices); returns (HystereticLfr, FitReport): the "
+      "system as an LFR whose hysteresis inputs are the inputs.");
 
   module.def("evaluate", &evaluate_model<StateSpace>, "model"_a, "input"_a, "output"_a,
              "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0,

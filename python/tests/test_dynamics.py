@@ -251,9 +251,49 @@ def test_fit_hysteretic_lfr_learns_a_feedback_the_linear_model_lacks():
             y[:, 0, r, :] = steady
         experiments.append((u, y))
     result = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5])
-    assert result.report.parameters == 7
+    assert result.report.parameters == 12  # Theta, T, 3 weights, a pole pair, B (2), C (2), D
     for u, y in experiments:
         before = hyst.evaluate(linear, u, y, periodic=True)["mean_relative_error"]
         after = hyst.evaluate(result.model, u, y, periodic=True)["mean_relative_error"]
         assert before > 0.1
         assert after < 0.1 * before
+
+
+def test_fit_hammerstein_finds_an_input_hysteresis():
+    # The true system: a PI model ahead of a lightly damped mode, its thresholds at 10 and 30 % of
+    # the largest input, on the fit's grid of fractions.
+    a = 0.97 * np.array([[math.cos(0.3), math.sin(0.3)], [-math.sin(0.3), math.cos(0.3)]])
+    linear = hyst.StateSpace(a, [[0.0], [1.0]], [[0.2, 0.1]], [[0.0]], sample_time=1e-3)
+    rng = np.random.default_rng(5)
+    n = np.arange(256)
+    periods = {}
+    for rms in (0.3, 1.5):
+        periods[rms] = []
+        for _ in range(3):
+            period = sum(np.cos(2 * np.pi * k * n / 256 + rng.uniform(0, 2 * np.pi))
+                         for k in range(1, 41))
+            periods[rms].append(period * rms / np.sqrt(np.mean(period ** 2)))
+    largest = max(np.max(np.abs(p)) for level in periods.values() for p in level)
+    pi = hyst.model_from_dict({"model": "pi", "version": 1, "params": {
+        "thresholds": [0.0, 0.1 * largest, 0.3 * largest], "weights": [1.0, -0.3, -0.2]}})
+    # As an LFR: z = u, w = PI[z] drives the linear block, y = C x.
+    truth = hyst.HystereticLfr(
+        hyst.StateSpace(a, [[0.0, 0.0], [0.0, 1.0]], [[0.2, 0.1], [0.0, 0.0]],
+                        [[0.0, 0.0], [1.0, 0.0]], sample_time=1e-3), 1, [pi])
+    experiments = []
+    for level in periods.values():
+        u = np.empty((256, 1, 3, 2))
+        y = np.empty_like(u)
+        for r, period in enumerate(level):
+            u[:, 0, r, :] = period[:, None]
+            y[:, 0, r, :] = truth.simulate_periodic(period[:, None])
+        experiments.append((u, y))
+    result = hyst.fit_hammerstein(linear, experiments, threshold_fractions=[0, 0.1, 0.2, 0.3, 0.5])
+    assert result.report.parameters == 4 + 2 + 2 + 2 + 1  # weights, a pole pair, B, C, D
+    for u, y in experiments:
+        before = hyst.evaluate(linear, u, y, periodic=True)["mean_relative_error"]
+        after = hyst.evaluate(result.model, u, y, periodic=True)["mean_relative_error"]
+        assert before > 0.02
+        assert after < 1e-4
+    with pytest.raises(hyst.Error, match="Hammerstein fit: threshold_fractions must start at 0"):
+        hyst.fit_hammerstein(linear, experiments, threshold_fractions=[0.1, 0.2])

@@ -346,7 +346,7 @@ JSON
   # linear system needs no feedback, so the fit cannot be worse than the linear model (0).
   expect_ok "$HYST" fit-system --model hysteretic_lfr --linear lag.json --data lag.csv --input u \
     --output y --samples-per-period 64 --sample-time 0.01 --thresholds 0,0.2,0.5 \
-    --lfr-iterations 5 --fixed-poles --out lag_lfr.json
+    --lfr-iterations 5 --fixed-poles --fixed-io --out lag_lfr.json
   expect_stdout "hysteretic_lfr fitted by" "linear block fixed" "with 4 parameters" \
     "wrote lag_lfr.json: hysteretic_lfr model, 1 states"
   expect_ok "$HYST" evaluate --model lag_lfr.json --data lag.csv --input u --output y \
@@ -354,7 +354,19 @@ JSON
   awk '/"mean_relative_error"/ { gsub(/[",]/, "", $2); if ($2 + 0 > 1e-6) bad = 1; seen = 1 }
        END { exit !(seen && !bad) }' "$WORK/stdout" ||
     fail "the LFR fitted to a linear system is worse than its linear model: $(cat "$WORK/stdout")"
-  expect_error 1 "--linear: only with --model hysteretic_lfr" -- "$HYST" fit-system \
+  # The same for a Hammerstein system, with the linear block free: 3 PI weights, the pole, B, C
+  # and D.
+  expect_ok "$HYST" fit-system --model hammerstein --linear lag.json --data lag.csv --input u \
+    --output y --samples-per-period 64 --sample-time 0.01 --thresholds 0,0.2,0.5,0.8 \
+    --hysteresis-iterations 5 --out lag_hammerstein.json
+  expect_stdout "hammerstein fitted by" "the linear block's poles, B, C and D" "with 7 parameters" \
+    "wrote lag_hammerstein.json: hammerstein model (a hysteretic_lfr file), 1 states"
+  expect_ok "$HYST" evaluate --model lag_hammerstein.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --periodic --json
+  awk '/"mean_relative_error"/ { gsub(/[",]/, "", $2); if ($2 + 0 > 1e-6) bad = 1; seen = 1 }
+       END { exit !(seen && !bad) }' "$WORK/stdout" ||
+    fail "the Hammerstein fit of a linear system is worse than its linear model: $(cat "$WORK/stdout")"
+  expect_error 1 "--linear: only with --model hysteretic_lfr or hammerstein" -- "$HYST" fit-system \
     --linear lag.json --data lag.csv --input u --output y --samples-per-period 64 \
     --sample-time 0.01 --out x.json
   expect_error 1 "--linear lag.json: sample time 0.01 s, but --sample-time is 0.02 s" -- \
@@ -372,7 +384,7 @@ JSON
   expect_error 1 "lag.csv --input 'u': 128 samples are not a whole number of periods of 60" -- \
     "$HYST" fit-system --data lag.csv --input u --output y --samples-per-period 60 \
     --sample-time 1 --out x.json
-  expect_error 1 "--model 'hammer': the dynamic models are: state_space, hysteretic_lfr" -- \
+  expect_error 1 "--model 'hammer': the dynamic models are: state_space, hysteretic_lfr, hammerstein" -- \
     "$HYST" fit-system --model hammer --data lag.csv --input u --output y --sample-time 1 \
     --out x.json
   expect_error 1 "order 0 must be in 1.." -- "$HYST" fit-system --data lag.csv --input u \

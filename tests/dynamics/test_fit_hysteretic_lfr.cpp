@@ -77,7 +77,8 @@ TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
   HystereticLfrFitOptions options;
   options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
   const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
-  EXPECT_EQ(fit.report.parameters, 1u + 1u + 3u + 2u);  // Theta, T, 3 weights, a pole pair
+  // Theta, T, 3 weights, a pole pair, B (2), C (2), D (1).
+  EXPECT_EQ(fit.report.parameters, 1u + 1u + 3u + 2u + 2u + 2u + 1u);
   EXPECT_LT(fit.report.final_cost, 1e-2 * fit.report.initial_cost);
   for (const auto& x : data) {
     const auto linear = score_state_space(linear_block(), x.input, x.output, {.periodic = true});

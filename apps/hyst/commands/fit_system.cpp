@@ -8,15 +8,18 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "../dynamic_data.hpp"
 #include "commands.hpp"
+#include "hyst/dynamics/fit_hammerstein.hpp"
 #include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
+#include "progress_display.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -30,10 +33,12 @@ struct FitSystemOptions {
   std::size_t max_iterations = 200;
   double excitation_threshold = BlaOptions{}.excitation_threshold;
   std::size_t transient_periods = 0;
-  std::string linear;  // hysteretic_lfr: start from this linear model
-  std::vector<double> threshold_fractions = HystereticLfrFitOptions{}.threshold_fractions;
-  std::size_t lfr_iterations = HystereticLfrFitOptions{}.max_iterations;
+  std::string linear;                       // hysteresis models: start from this linear model
+  std::vector<double> threshold_fractions;  // empty: the model's default
+  std::size_t hysteresis_iterations = HystereticLfrFitOptions{}.max_iterations;
   bool fixed_poles = false;
+  bool fixed_io_matrices = false;
+  ProgressFlags progress;
   std::string out;
 };
 
@@ -62,31 +67,61 @@ nlohmann::json fit_info(const FitReport& report, nlohmann::json scores) {
           {"training_scores", std::move(scores)}};
 }
 
-// The hysteretic LFR from a linear model: given (--linear) or fitted here first.
-void fit_lfr(const FitSystemOptions& options, const std::vector<PeriodicExperiment>& experiments,
-             const StateSpace& linear) {
-  HystereticLfrFitOptions fit_options;
-  fit_options.threshold_fractions = options.threshold_fractions;
-  fit_options.max_iterations = options.lfr_iterations;
+// A model with hysteresis (hysteretic_lfr, hammerstein) from a linear model: given (--linear) or
+// fitted here first.
+template <typename FitOptions, typename Fit>
+void fit_hysteretic(const FitSystemOptions& options,
+                    const std::vector<PeriodicExperiment>& experiments, const StateSpace& linear,
+                    const Fit& fit_model) {
+  FitOptions fit_options;
+  if (!options.threshold_fractions.empty())
+    fit_options.threshold_fractions = options.threshold_fractions;
+  fit_options.max_iterations = options.hysteresis_iterations;
   fit_options.fit_poles = !options.fixed_poles;
-  const auto fit = fit_hysteretic_lfr(linear, experiments, fit_options);
+  fit_options.fit_io_matrices = !options.fixed_io_matrices;
+  ProgressDisplay display("hyst fit-system", options.progress.mode());
+  fit_options.progress = display.callback();
+  const auto fit = display.run(fmt::format("fitting {}", options.model),
+                               [&] { return fit_model(linear, experiments, fit_options); });
   fmt::print("{}\n", fit.report.brief());
   const auto model = any_hysteretic_lfr(fit.model);
   const ScoreOptions periodic{.periodic = true};
   auto scores = scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
     return score_hysteretic_lfr(model, x.input, x.output, periodic);
   });
-  save_hysteretic_lfr(options.out, model, fit_info(fit.report, std::move(scores)));
-  fmt::print("wrote {}: hysteretic_lfr model, {} states, {} inputs, {} outputs, {} parameters\n",
-             options.out, model.order(), model.inputs(), model.outputs(), model.parameter_count());
+  auto info = fit_info(fit.report, std::move(scores));
+  info["fit"]["structure"] = options.model;
+  save_hysteretic_lfr(options.out, model, info);
+  fmt::print("wrote {}: {} model{}, {} states, {} inputs, {} outputs, {} parameters\n", options.out,
+             options.model, options.model == "hysteretic_lfr" ? "" : " (a hysteretic_lfr file)",
+             model.order(), model.inputs(), model.outputs(), model.parameter_count());
+}
+
+void fit_with_hysteresis(const FitSystemOptions& options,
+                         const std::vector<PeriodicExperiment>& experiments,
+                         const StateSpace& linear) {
+  if (options.model == "hammerstein")
+    return fit_hysteretic<HammersteinFitOptions>(
+        options, experiments, linear,
+        [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,
+           const HammersteinFitOptions& o) { return fit_hammerstein(l, x, o); });
+  fit_hysteretic<HystereticLfrFitOptions>(
+      options, experiments, linear,
+      [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,
+         const HystereticLfrFitOptions& o) { return fit_hysteretic_lfr(l, x, o); });
 }
 
 void run(const FitSystemOptions& options) {
-  if (options.model != "state_space" && options.model != "hysteretic_lfr")
-    throw Error(fmt::format("--model '{}': the dynamic models are: state_space, hysteretic_lfr",
-                            options.model));
-  if (!options.linear.empty() && options.model != "hysteretic_lfr")
-    throw Error("--linear: only with --model hysteretic_lfr (the linear model it starts from)");
+  if (options.model != "state_space" && options.model != "hysteretic_lfr" &&
+      options.model != "hammerstein")
+    throw Error(
+        fmt::format("--model '{}': the dynamic models are: state_space, hysteretic_lfr, "
+                    "hammerstein",
+                    options.model));
+  if (!options.linear.empty() && options.model == "state_space")
+    throw Error(
+        "--linear: only with --model hysteretic_lfr or hammerstein (the linear model they start "
+        "from)");
   auto inputs = dynamic_data_inputs(options.data);
   if (!options.linear.empty()) inputs.push_back({options.linear, "--linear"});
   io::check_outputs(inputs, {{options.out, "--out"}});
@@ -98,7 +133,7 @@ void run(const FitSystemOptions& options) {
     if (linear.sample_time() != options.sample_time)
       throw Error(fmt::format("--linear {}: sample time {:g} s, but --sample-time is {:g} s",
                               options.linear, linear.sample_time(), options.sample_time));
-    return fit_lfr(options, experiments, linear);
+    return fit_with_hysteresis(options, experiments, linear);
   }
 
   const auto bla = estimate_bla(experiments, options.sample_time,
@@ -115,7 +150,7 @@ void run(const FitSystemOptions& options) {
   const auto fit = fit_state_space(bla, fit_options);
   fmt::print("{}\n", fit.report.brief());
 
-  if (options.model == "hysteretic_lfr") return fit_lfr(options, experiments, fit.model);
+  if (options.model != "state_space") return fit_with_hysteresis(options, experiments, fit.model);
   auto info =
       fit_info(fit.report, scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
                  return score_state_space(fit.model, x.input, x.output, {.periodic = true});
@@ -134,8 +169,9 @@ void add_fit_system_command(CLI::App& app) {
       "fit-system", "Fit a dynamic multi-input model (state space) to periodic experiments.");
   command
       ->add_option("--model", options->model,
-                   "Dynamic model: state_space, or hysteretic_lfr (a PI model per output in the "
-                   "feedback of the linear model, fitted on the simulation error)")
+                   "Dynamic model: state_space; hysteretic_lfr (a PI model per output in the "
+                   "feedback of the linear model); hammerstein (a PI model per input ahead of "
+                   "it). Both are fitted from the linear model on the simulation error")
       ->capture_default_str();
   add_dynamic_data_options(*command, options->data, true);
   command->add_option("--sample-time", options->sample_time, "Sample time Ts [s]")
@@ -161,21 +197,28 @@ void add_fit_system_command(CLI::App& app) {
       ->capture_default_str();
   command
       ->add_option("--linear", options->linear,
-                   "hysteretic_lfr: start from this state_space model file instead of fitting one")
+                   "hysteretic_lfr, hammerstein: start from this state_space model file instead "
+                   "of fitting one")
       ->check(CLI::ExistingFile);
   command
       ->add_option("--thresholds", options->threshold_fractions,
-                   "hysteretic_lfr: PI thresholds as fractions of the largest hysteresis input, "
-                   "from 0")
-      ->delimiter(',')
-      ->capture_default_str();
+                   fmt::format("hysteretic_lfr, hammerstein: PI thresholds as fractions of the "
+                               "largest hysteresis input, from 0 (default {} for hysteretic_lfr, "
+                               "{} for hammerstein)",
+                               fmt::join(HystereticLfrFitOptions{}.threshold_fractions, ","),
+                               fmt::join(HammersteinFitOptions{}.threshold_fractions, ",")))
+      ->delimiter(',');
   command
-      ->add_option("--lfr-iterations", options->lfr_iterations,
-                   "hysteretic_lfr: Levenberg-Marquardt iterations on the simulation error")
+      ->add_option("--hysteresis-iterations,--lfr-iterations", options->hysteresis_iterations,
+                   "hysteretic_lfr, hammerstein: Levenberg-Marquardt iterations on the "
+                   "simulation error")
       ->capture_default_str();
   command->add_flag("--fixed-poles", options->fixed_poles,
-                    "hysteretic_lfr: keep the linear model's poles (fit the feedback alone)");
+                    "hysteretic_lfr, hammerstein: keep the linear model's poles");
+  command->add_flag("--fixed-io", options->fixed_io_matrices,
+                    "hysteretic_lfr, hammerstein: keep the linear model's B, C and D");
   command->add_option("--out", options->out, "Model file to write (JSON)")->required();
+  add_progress_flags(*command, options->progress);
   command->footer(R"(The experiments (e.g. several amplitude levels) are pooled into one best
 linear approximation, of which a state-space model of the given order is fitted.
 Example:

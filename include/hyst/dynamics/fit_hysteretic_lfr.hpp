@@ -14,10 +14,11 @@
 //! Theta = 0 it is the linear model. Each PI has thresholds at fixed fractions of the largest
 //! |z_i| over the data (the first 0, its weight held at 1: it is the linear stiffness change, the
 //! others make it depend on the amplitude); Theta, T and the other weights are fitted by
-//! Levenberg-Marquardt (Ceres, central differences) on the free-run simulation error of every
-//! realisation, each period after a warm-up period, each experiment's channels weighted by
-//! 1 / their standard deviation (the benchmark's relative error). With fit_poles, the poles of the
-//! linear block (in real modal form) are fitted with them; its Bu, Cy and Dyu stay as fitted.
+//! Levenberg-Marquardt (Ceres, with the Jacobian from the simulation's forward sensitivities) on
+//! the free-run simulation error of every realisation, each period after a warm-up period, each
+//! experiment's channels weighted by 1 / their standard deviation (the benchmark's relative
+//! error). With fit_poles, the poles of the linear block (in real modal form) are fitted with
+//! them, and with fit_io_matrices its B, C and D: all parameters jointly.
 
 #include <cstddef>
 #include <span>
@@ -41,6 +42,8 @@ struct HystereticLfrFitOptions {
   //! form (fit_state_space's is): the feedback then shifts the resonances around poles that need
   //! not be the pooled linear fit's compromise.
   bool fit_poles = true;
+  //! Fit B, C and D of the linear block too (all its parameters jointly with the feedback's).
+  bool fit_io_matrices = true;
   double max_pole_radius = 0.99999;  //!< bound on every fitted pole's magnitude
   ProgressCallback progress{};       //!< told before the fit and when it ends
 };
