@@ -125,31 +125,65 @@ py::dict evaluate_model(const Model& model, const AnyArray& input, const AnyArra
 template <typename Options, typename Fit>
 void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const char* doc) {
   const Options defaults;
-  module.def(
-      name,
-      [fit](const StateSpace& linear, const py::sequence& experiments, const std::string& layout,
-            const std::vector<double>& threshold_fractions, bool fit_poles, bool fit_io_matrices,
-            double max_pole_radius, std::size_t max_iterations, std::size_t threads,
-            const py::object& progress) {
-        const auto data = experiments_of(experiments, layout);
-        const Options options{.threshold_fractions = threshold_fractions,
-                              .max_iterations = max_iterations,
-                              .threads = threads,
-                              .fit_poles = fit_poles,
-                              .fit_io_matrices = fit_io_matrices,
-                              .max_pole_radius = max_pole_radius,
-                              .progress = progress_callback(progress)};
-        auto result = [&] {
-          py::gil_scoped_release release;
-          return fit(linear, data, options);
-        }();
-        return py::make_tuple(any_hysteretic_lfr(result.model), std::move(result.report));
-      },
-      "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
-      "threshold_fractions"_a = defaults.threshold_fractions, "fit_poles"_a = defaults.fit_poles,
-      "fit_io_matrices"_a = defaults.fit_io_matrices,
-      "max_pole_radius"_a = defaults.max_pole_radius, "max_iterations"_a = defaults.max_iterations,
-      "threads"_a = defaults.threads, "progress"_a = py::none(), doc);
+  const auto run = [fit](const StateSpace& linear, const py::sequence& experiments,
+                         const std::string& layout, const Options& options) {
+    const auto data = experiments_of(experiments, layout);
+    auto result = [&] {
+      py::gil_scoped_release release;
+      return fit(linear, data, options);
+    }();
+    return py::make_tuple(any_hysteretic_lfr(result.model), std::move(result.report));
+  };
+  const auto options = [](const std::vector<double>& threshold_fractions, bool fit_poles,
+                          bool fit_io_matrices, double max_pole_radius, std::size_t max_iterations,
+                          std::size_t threads, const py::object& progress) {
+    return Options{.threshold_fractions = threshold_fractions,
+                   .max_iterations = max_iterations,
+                   .threads = threads,
+                   .fit_poles = fit_poles,
+                   .fit_io_matrices = fit_io_matrices,
+                   .max_pole_radius = max_pole_radius,
+                   .progress = progress_callback(progress)};
+  };
+  if constexpr (requires { defaults.general_iterations; }) {
+    module.def(
+        name,
+        [run, options](const StateSpace& linear, const py::sequence& experiments,
+                       const std::string& layout, const std::vector<double>& threshold_fractions,
+                       bool fit_poles, bool fit_io_matrices, double max_pole_radius,
+                       std::size_t max_iterations, std::size_t general_iterations,
+                       std::size_t threads, const py::object& progress) {
+          auto o = options(threshold_fractions, fit_poles, fit_io_matrices, max_pole_radius,
+                           max_iterations, threads, progress);
+          o.general_iterations = general_iterations;
+          return run(linear, experiments, layout, o);
+        },
+        "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
+        "threshold_fractions"_a = defaults.threshold_fractions, "fit_poles"_a = defaults.fit_poles,
+        "fit_io_matrices"_a = defaults.fit_io_matrices,
+        "max_pole_radius"_a = defaults.max_pole_radius,
+        "max_iterations"_a = defaults.max_iterations,
+        "general_iterations"_a = defaults.general_iterations, "threads"_a = defaults.threads,
+        "progress"_a = py::none(), doc);
+  } else {
+    module.def(
+        name,
+        [run, options](const StateSpace& linear, const py::sequence& experiments,
+                       const std::string& layout, const std::vector<double>& threshold_fractions,
+                       bool fit_poles, bool fit_io_matrices, double max_pole_radius,
+                       std::size_t max_iterations, std::size_t threads,
+                       const py::object& progress) {
+          return run(linear, experiments, layout,
+                     options(threshold_fractions, fit_poles, fit_io_matrices, max_pole_radius,
+                             max_iterations, threads, progress));
+        },
+        "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
+        "threshold_fractions"_a = defaults.threshold_fractions, "fit_poles"_a = defaults.fit_poles,
+        "fit_io_matrices"_a = defaults.fit_io_matrices,
+        "max_pole_radius"_a = defaults.max_pole_radius,
+        "max_iterations"_a = defaults.max_iterations, "threads"_a = defaults.threads,
+        "progress"_a = py::none(), doc);
+  }
 }
 
 }  // namespace
@@ -349,7 +383,8 @@ void bind_dynamics(py::module_& module) {
       "A hysteretic LFR fitted from a linear model on the simulation error of periodic "
       "experiments (a sequence of (input, output) arrays whose axes `layout` names): a PI model "
       "per output in the feedback, jointly with the linear block's poles (fit_poles) and B, C, D "
-      "(fit_io_matrices); returns (HystereticLfr, FitReport).");
+      "(fit_io_matrices), then general_iterations with every matrix of the LFR free; returns "
+      "(HystereticLfr, FitReport).");
   def_hysteresis_fit<HammersteinFitOptions>(
       module, "fit_hammerstein",
       [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,

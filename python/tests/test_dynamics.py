@@ -251,7 +251,11 @@ def test_fit_hysteretic_lfr_learns_a_feedback_the_linear_model_lacks():
             y[:, 0, r, :] = steady
         experiments.append((u, y))
     result = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5])
-    assert result.report.parameters == 12  # Theta, T, 3 weights, a pole pair, B (2), C (2), D
+    # Then every matrix free: 3 weights, a pole pair, B 2 x 2, C 2 x 2, D 2 x 2 but Dzw.
+    assert result.report.parameters == 16
+    alone = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5],
+                                    general_iterations=0)
+    assert alone.report.parameters == 12  # Theta, T, 3 weights, a pole pair, B (2), C (2), D
     for u, y in experiments:
         before = hyst.evaluate(linear, u, y, periodic=True)["mean_relative_error"]
         after = hyst.evaluate(result.model, u, y, periodic=True)["mean_relative_error"]

@@ -77,8 +77,11 @@ TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
   HystereticLfrFitOptions options;
   options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
   const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
-  // Theta, T, 3 weights, a pole pair, B (2), C (2), D (1).
-  EXPECT_EQ(fit.report.parameters, 1u + 1u + 3u + 2u + 2u + 2u + 1u);
+  // Then every matrix free: 3 weights, a pole pair, B 2 x 2, C 2 x 2, D 2 x 2 but Dzw.
+  EXPECT_EQ(fit.report.parameters, 3u + 2u + 4u + 4u + 3u);
+  EXPECT_NE(fit.report.method.find("then of the PI weights (4 plays per channel) and every matrix"),
+            std::string::npos)
+      << fit.report.method;
   EXPECT_LT(fit.report.final_cost, 1e-2 * fit.report.initial_cost);
   for (const auto& x : data) {
     const auto linear = score_state_space(linear_block(), x.input, x.output, {.periodic = true});
@@ -92,6 +95,22 @@ TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
     EXPECT_GT(linear.mean_relative_error, 0.1);  // the feedback matters at this amplitude
     EXPECT_LT(lfr.mean_relative_error, 0.1 * linear.mean_relative_error);
   }
+}
+
+TEST(FitHystereticLfr, TheStructuredStageAloneFitsTheFeedbackAndTheLinearBlock) {
+  const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  options.general_iterations = 0;
+  const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
+  // Theta, T, 3 weights, a pole pair, B (2), C (2), D (1).
+  EXPECT_EQ(fit.report.parameters, 1u + 1u + 3u + 2u + 2u + 2u + 1u);
+  EXPECT_LT(fit.report.final_cost, 1e-2 * fit.report.initial_cost);
+  // The feedback enters where the input does: Bw = Bu Theta, parallel columns.
+  const auto& m = fit.model.matrices();
+  EXPECT_GT(m.b_w.norm(), 0.0);
+  EXPECT_LT(std::abs(m.b_u(0, 0) * m.b_w(1, 0) - m.b_u(1, 0) * m.b_w(0, 0)),
+            1e-12 * m.b_u.norm() * m.b_w.norm());
 }
 
 TEST(FitHystereticLfr, NamesWhatIsWrong) {

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../../src/dynamics/detail/feedback_lfr_parametrisation.hpp"
+#include "../../src/dynamics/detail/general_lfr_parametrisation.hpp"
 #include "../../src/dynamics/detail/hammerstein_parametrisation.hpp"
 #include "../../src/dynamics/detail/lfr_sensitivity.hpp"
 
@@ -113,6 +114,23 @@ TEST(LfrSensitivity, FeedbackLfrMatchesCentralDifferences) {
   // Theta (4), T (4), 2 x 2 weights, 4 pole parameters, B (8), C (8), D (4).
   EXPECT_EQ(structure.size(), 4 + 4 + 4 + 4 + 8 + 8 + 4);
   expect_sensitivities(structure, moved(structure, 0.2));
+}
+
+TEST(LfrSensitivity, GeneralLfrMatchesCentralDifferences) {
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.3};
+  const detail::FeedbackLfrParametrisation structure(linear_block(), scales(), options, "test");
+  const auto theta = moved(structure, 0.05);  // poles stay inside max_pole_radius
+  const detail::GeneralLfrParametrisation general(structure.at(theta.data()).model, true, 0.99999,
+                                                  "test");
+  // 2 x 2 weights, 4 pole parameters, B 4 x 4, C 4 x 4, D 4 x 4 but its zero 2 x 2 Dzw corner.
+  EXPECT_EQ(general.size(), 4 + 4 + 16 + 16 + 12);
+  const auto start = general.initial();
+  const auto same = general.at(start.data()).model.simulate(input());
+  const auto expected = structure.at(theta.data()).model.simulate(input());
+  EXPECT_LT((same - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff())
+      << "it starts where the structured model is";
+  expect_sensitivities(general, moved(general, 0.05));
 }
 
 TEST(LfrSensitivity, HammersteinMatchesCentralDifferences) {

@@ -38,6 +38,7 @@ struct FitSystemOptions {
   std::size_t hysteresis_iterations = HystereticLfrFitOptions{}.max_iterations;
   bool fixed_poles = false;
   bool fixed_io_matrices = false;
+  std::size_t general_iterations = HystereticLfrFitOptions{}.general_iterations;
   ProgressFlags progress;
   std::string out;
 };
@@ -79,6 +80,8 @@ void fit_hysteretic(const FitSystemOptions& options,
   fit_options.max_iterations = options.hysteresis_iterations;
   fit_options.fit_poles = !options.fixed_poles;
   fit_options.fit_io_matrices = !options.fixed_io_matrices;
+  if constexpr (requires { fit_options.general_iterations; })
+    fit_options.general_iterations = options.general_iterations;
   ProgressDisplay display("hyst fit-system", options.progress.mode());
   fit_options.progress = display.callback();
   const auto fit = display.run(fmt::format("fitting {}", options.model),
@@ -212,6 +215,11 @@ void add_fit_system_command(CLI::App& app) {
       ->add_option("--hysteresis-iterations,--lfr-iterations", options->hysteresis_iterations,
                    "hysteretic_lfr, hammerstein: Levenberg-Marquardt iterations on the "
                    "simulation error")
+      ->capture_default_str();
+  command
+      ->add_option("--general-iterations", options->general_iterations,
+                   "hysteretic_lfr: then Levenberg-Marquardt iterations with every matrix of the "
+                   "LFR free (0: none)")
       ->capture_default_str();
   command->add_flag("--fixed-poles", options->fixed_poles,
                     "hysteretic_lfr, hammerstein: keep the linear model's poles");

@@ -18,7 +18,8 @@
 //! the free-run simulation error of every realisation, each period after a warm-up period, each
 //! experiment's channels weighted by 1 / their standard deviation (the benchmark's relative
 //! error). With fit_poles, the poles of the linear block (in real modal form) are fitted with
-//! them, and with fit_io_matrices its B, C and D: all parameters jointly.
+//! them, and with fit_io_matrices its B, C and D: all parameters jointly. Then (general_iterations)
+//! every matrix of the LFR is freed from that structure and fitted on, from where it ended.
 
 #include <cstddef>
 #include <span>
@@ -36,8 +37,12 @@ namespace hyst {
 struct HystereticLfrFitOptions {
   //! PI thresholds as fractions of the largest |z_i|, increasing from 0.
   std::vector<double> threshold_fractions = {0.0, 0.02, 0.05, 0.1, 0.2, 0.4};
-  std::size_t max_iterations = 30;  //!< Levenberg-Marquardt iterations
-  std::size_t threads = 2;          //!< realisations simulated in parallel
+  std::size_t max_iterations = 30;  //!< Levenberg-Marquardt iterations in the structure above
+  //! Then this many with every matrix of the LFR free: the feedback paths Bw, Cz, Dyw and Dzu no
+  //! longer follow B, C and D through Theta and T, so the fit finds where in the structure the
+  //! hysteresis acts (fit_poles still decides on the poles). 0: the structure above only.
+  std::size_t general_iterations = 20;
+  std::size_t threads = 2;  //!< realisations simulated in parallel
   //! Fit the poles of the linear block too (radius and angle of each), when its A is in real modal
   //! form (fit_state_space's is): the feedback then shifts the resonances around poles that need
   //! not be the pooled linear fit's compromise.

@@ -19,7 +19,7 @@ std::vector<MatrixEntryDerivative> entries_of(const LfrPoint& point, LfrMatrix m
   return result;
 }
 
-// d(M v) += dM v for the entries of M: row-major derivative matrix `into` (parameters x rows).
+// d(M v) += dM v for the entries of M; `into` has a row per parameter, a column per value of M v.
 void add_entries(const std::vector<MatrixEntryDerivative>& entries, const double* v,
                  MatrixXd& into) {
   for (const auto& e : entries)

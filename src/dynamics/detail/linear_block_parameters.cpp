@@ -49,19 +49,21 @@ std::vector<LinearBlockParameters::ModalBlock> LinearBlockParameters::modal_bloc
 }
 
 LinearBlockParameters::LinearBlockParameters(const StateSpace& linear, bool poles, bool io_matrices,
-                                             double max_pole_radius, const std::string& fit)
-    : linear_(linear.params()), max_pole_radius_(max_pole_radius) {
+                                             double max_pole_radius, const std::string& fit,
+                                             Index zero_corner)
+    : linear_(linear.params()), max_pole_radius_(max_pole_radius), zero_corner_(zero_corner) {
   if (poles) blocks_ = modal_blocks(linear_.a);
   for (const auto& block : blocks_) {
-    if (!(block.radius < max_pole_radius))
-      throw Error(fmt::format("{}: a pole of the linear model has magnitude {}, not below "
+    if (!(block.radius <= max_pole_radius))
+      throw Error(fmt::format("{}: a pole of the linear model has magnitude {}, above "
                               "max_pole_radius {}",
                               fit, block.radius, max_pole_radius),
                   "max_pole_radius");
     pole_parameters_ += block.size;
   }
   if (io_matrices) {
-    io_parameters_ = linear_.b.size() + linear_.c.size() + linear_.d.size();
+    io_parameters_ =
+        linear_.b.size() + linear_.c.size() + linear_.d.size() - zero_corner * zero_corner;
     b_scale_ = rms_or_one(linear_.b);
     c_scale_ = rms_or_one(linear_.c);
     d_scale_ = rms_or_one(linear_.d);
@@ -91,7 +93,9 @@ StateSpace::Params LinearBlockParameters::params(const double* parameters) const
   };
   shift(result.b, b_scale_);
   shift(result.c, c_scale_);
-  shift(result.d, d_scale_);
+  for (Index c = 0; c < result.d.cols(); ++c)
+    for (Index r = 0; r < result.d.rows(); ++r)
+      if (is_parameter_of_d(r, c)) result.d(r, c) += d_scale_ * *io++;
   return result;
 }
 
@@ -124,7 +128,8 @@ void LinearBlockParameters::derivatives(const double* parameters, Index offset,
   const auto each = [&](LfrMatrix matrix, const MatrixXd& m, double scale) {
     for (Index c = 0; c < m.cols(); ++c)
       for (Index r = 0; r < m.rows(); ++r)
-        out.push_back({matrix, j++, r, c, scale});
+        if (matrix != LfrMatrix::d || is_parameter_of_d(r, c))
+          out.push_back({matrix, j++, r, c, scale});
   };
   each(LfrMatrix::b, linear_.b, b_scale_);
   each(LfrMatrix::c, linear_.c, c_scale_);

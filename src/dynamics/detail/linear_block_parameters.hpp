@@ -2,7 +2,9 @@
 // The parameters of a fitted linear block that a fit on the simulation error frees: the poles,
 // when A is in real modal form (what fit_state_space returns), as the change of log |pole| and of
 // the angle of each pair; and B, C and D as their fitted values plus a scale (the RMS of the
-// fitted entries) times the parameters. Every parameter is dimensionless and starts at 0.
+// fitted entries) times the parameters. Every parameter is dimensionless and starts at 0. An LFR's
+// whole linear block can be freed too: its Dzw corner (hysteresis output to hysteresis input, no
+// algebraic loop) then stays zero.
 
 #include <string>
 #include <vector>
@@ -16,10 +18,12 @@ namespace hyst::detail {
 
 class LinearBlockParameters {
  public:
-  // Throws hyst::Error (the message starting with `fit`) when a pole that is freed has magnitude
-  // max_pole_radius or more. Poles are kept when A is not in real modal form.
+  // Throws hyst::Error (the message starting with `fit`) when a pole that is freed has a magnitude
+  // above max_pole_radius. Poles are kept when A is not in real modal form. The bottom-right
+  // zero_corner x zero_corner block of D is no parameter.
   LinearBlockParameters(const StateSpace& linear, bool poles, bool io_matrices,
-                        double max_pole_radius, const std::string& fit);
+                        double max_pole_radius, const std::string& fit,
+                        Eigen::Index zero_corner = 0);
 
   Eigen::Index size() const { return pole_parameters_ + io_parameters_; }
   bool poles_free() const { return !blocks_.empty(); }
@@ -52,6 +56,11 @@ class LinearBlockParameters {
   Eigen::Index pole_parameters_ = 0, io_parameters_ = 0;
   double b_scale_ = 1.0, c_scale_ = 1.0, d_scale_ = 1.0;
   double max_pole_radius_ = 1.0;
+  Eigen::Index zero_corner_ = 0;
+
+  bool is_parameter_of_d(Eigen::Index row, Eigen::Index col) const {
+    return row < linear_.d.rows() - zero_corner_ || col < linear_.d.cols() - zero_corner_;
+  }
 };
 
 }  // namespace hyst::detail
