@@ -370,6 +370,12 @@ JSON
   awk '/"mean_relative_error"/ { gsub(/[",]/, "", $2); if ($2 + 0 > 1e-6) bad = 1; seen = 1 }
        END { exit !(seen && !bad) }' "$WORK/stdout" ||
     fail "the Hammerstein fit of a linear system is worse than its linear model: $(cat "$WORK/stdout")"
+  expect_error 1 "--general-iterations: only with --model hysteretic_lfr" -- "$HYST" fit-system \
+    --model hammerstein --linear lag.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --sample-time 0.01 --general-iterations 3 --out x.json
+  expect_error 1 "--thresholds: only with --model hysteretic_lfr or hammerstein" -- "$HYST" \
+    fit-system --data lag.csv --input u --output y --samples-per-period 64 --sample-time 0.01 \
+    --thresholds 0,0.5 --out x.json
   expect_error 1 "--linear: only with --model hysteretic_lfr or hammerstein" -- "$HYST" fit-system \
     --linear lag.json --data lag.csv --input u --output y --samples-per-period 64 \
     --sample-time 0.01 --out x.json

@@ -41,6 +41,7 @@ struct FitSystemOptions {
   std::size_t general_iterations = HystereticLfrFitOptions{}.general_iterations;
   ProgressFlags progress;
   std::string out;
+  std::vector<std::string> given;  // the options of the models with hysteresis given
 };
 
 nlohmann::json scores_json(const std::vector<PeriodicExperiment>& experiments,
@@ -121,10 +122,12 @@ void run(const FitSystemOptions& options) {
         fmt::format("--model '{}': the dynamic models are: state_space, hysteretic_lfr, "
                     "hammerstein",
                     options.model));
-  if (!options.linear.empty() && options.model == "state_space")
+  if (!options.given.empty() && options.model == "state_space")
     throw Error(
-        "--linear: only with --model hysteretic_lfr or hammerstein (the linear model they start "
-        "from)");
+        fmt::format("{}: only with --model hysteretic_lfr or hammerstein", options.given[0]));
+  for (const auto& name : options.given)
+    if (name == "--general-iterations" && options.model != "hysteretic_lfr")
+      throw Error("--general-iterations: only with --model hysteretic_lfr");
   auto inputs = dynamic_data_inputs(options.data);
   if (!options.linear.empty()) inputs.push_back({options.linear, "--linear"});
   io::check_outputs(inputs, {{options.out, "--out"}});
@@ -198,33 +201,43 @@ void add_fit_system_command(CLI::App& app) {
       ->add_option("--transient-periods", options->transient_periods,
                    "Periods left out at the start of each realisation")
       ->capture_default_str();
-  command
-      ->add_option("--linear", options->linear,
-                   "hysteretic_lfr, hammerstein: start from this state_space model file instead "
-                   "of fitting one")
-      ->check(CLI::ExistingFile);
-  command
-      ->add_option("--thresholds", options->threshold_fractions,
-                   fmt::format("hysteretic_lfr, hammerstein: PI thresholds as fractions of the "
-                               "largest hysteresis input, from 0 (default {} for hysteretic_lfr, "
-                               "{} for hammerstein)",
-                               fmt::join(HystereticLfrFitOptions{}.threshold_fractions, ","),
-                               fmt::join(HammersteinFitOptions{}.threshold_fractions, ",")))
-      ->delimiter(',');
-  command
-      ->add_option("--hysteresis-iterations,--lfr-iterations", options->hysteresis_iterations,
-                   "hysteretic_lfr, hammerstein: Levenberg-Marquardt iterations on the "
-                   "simulation error")
-      ->capture_default_str();
-  command
-      ->add_option("--general-iterations", options->general_iterations,
-                   "hysteretic_lfr: then Levenberg-Marquardt iterations with every matrix of the "
-                   "LFR free (0: none)")
-      ->capture_default_str();
-  command->add_flag("--fixed-poles", options->fixed_poles,
-                    "hysteretic_lfr, hammerstein: keep the linear model's poles");
-  command->add_flag("--fixed-io", options->fixed_io_matrices,
-                    "hysteretic_lfr, hammerstein: keep the linear model's B, C and D");
+  std::vector<CLI::Option*> hysteresis_options;
+  hysteresis_options.push_back(
+      command
+          ->add_option(
+              "--linear", options->linear,
+              "hysteretic_lfr, hammerstein: start from this state_space model file instead "
+              "of fitting one")
+          ->check(CLI::ExistingFile));
+  hysteresis_options.push_back(
+      command
+          ->add_option(
+              "--thresholds", options->threshold_fractions,
+              fmt::format("hysteretic_lfr, hammerstein: PI thresholds as fractions of the "
+                          "largest hysteresis input, from 0 (default {} for hysteretic_lfr, "
+                          "{} for hammerstein)",
+                          fmt::join(HystereticLfrFitOptions{}.threshold_fractions, ","),
+                          fmt::join(HammersteinFitOptions{}.threshold_fractions, ",")))
+          ->delimiter(','));
+  hysteresis_options.push_back(
+      command
+          ->add_option("--hysteresis-iterations,--lfr-iterations", options->hysteresis_iterations,
+                       "hysteretic_lfr, hammerstein: Levenberg-Marquardt iterations on the "
+                       "simulation error")
+          ->capture_default_str());
+  hysteresis_options.push_back(
+      command
+          ->add_option(
+              "--general-iterations", options->general_iterations,
+              "hysteretic_lfr: then Levenberg-Marquardt iterations with every matrix of the "
+              "LFR free (0: none)")
+          ->capture_default_str());
+  hysteresis_options.push_back(
+      command->add_flag("--fixed-poles", options->fixed_poles,
+                        "hysteretic_lfr, hammerstein: keep the linear model's poles"));
+  hysteresis_options.push_back(
+      command->add_flag("--fixed-io", options->fixed_io_matrices,
+                        "hysteretic_lfr, hammerstein: keep the linear model's B, C and D"));
   command->add_option("--out", options->out, "Model file to write (JSON)")->required();
   add_progress_flags(*command, options->progress);
   command->footer(R"(The experiments (e.g. several amplitude levels) are pooled into one best
@@ -233,7 +246,11 @@ Example:
   hyst fit-system --order 28 --sample-time 1.5625e-4 --layout N,channel,realisation,period \
       --input-npy u_100mV.npy --output-npy y_100mV.npy \
       --input-npy u_300mV.npy --output-npy y_300mV.npy --out fsm.json)");
-  command->callback([options] { run(*options); });
+  command->callback([options, hysteresis_options] {
+    for (const auto* option : hysteresis_options)
+      if (option->count() > 0) options->given.push_back(option->get_name());
+    run(*options);
+  });
 }
 
 }  // namespace hyst::cli
