@@ -16,7 +16,9 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "../support/shell_command.hpp"
 #include "../support/temp_folder_test.hpp"
+#include "../support/test_signals.hpp"
 #include "hyst/export/export_c.hpp"
 #include "hyst/models/preisach.hpp"
 #include "hyst/registry/model_file.hpp"
@@ -25,19 +27,6 @@
 namespace hyst {
 namespace {
 
-// Runs a shell command; returns its exit status and (when wanted) its standard output.
-int run(const std::string& command, std::string* output = nullptr) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return -1;
-  std::string text;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
-    text += buffer;
-  const int status = ::pclose(pipe);
-  if (output) *output = text;
-  return status;
-}
-
 std::vector<double> numbers_in(const std::string& text) {
   std::istringstream in(text);
   std::vector<double> values;
@@ -45,25 +34,6 @@ std::vector<double> numbers_in(const std::string& text) {
   while (in >> token)
     values.push_back(std::stod(token));
   return values;
-}
-
-// A seeded input: a random walk with reversals of all sizes, clipped to [low, high], some
-// samples repeated (no-change steps) and a few beyond the range.
-std::vector<double> seeded_input(unsigned seed, double low, double high, std::size_t count) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> input(count);
-  const double span = high - low;
-  double v = low + 0.5 * span;
-  double direction = 1.0;
-  for (std::size_t k = 0; k < count; ++k) {
-    if (unit(random) < 0.08) direction = -direction;
-    const double draw = unit(random);
-    if (draw > 0.05) v += direction * span * 0.04 * unit(random);
-    v = std::clamp(v, low - 0.02 * span, high + 0.02 * span);
-    input[k] = v;
-  }
-  return input;
 }
 
 // The driver: reads n inputs and n targets, runs the model from init() and from reset() and the
@@ -142,15 +112,17 @@ class ExportCTest : public test::TempFolderTest {
   void compare(const Case& c, CScalar scalar, const std::string& flags, double tolerance,
                const InverseLimits& limits = {}) {
     auto model = model_from_json(c.document, "test");
-    const auto warm = seeded_input(7, c.low, c.high, c.warm_up);
+    const auto warm = test::seeded_input(7, c.low, c.high, c.warm_up, 0.02);
     std::vector<double> ignored(warm.size());
     model->simulate(warm, ignored);  // the exported state is this one, not the default
 
-    const auto input = c.input.empty() ? seeded_input(11, c.low, c.high, 3000) : c.input;
+    const auto input =
+        c.input.empty() ? test::seeded_input(11, c.low, c.high, 3000, 0.02) : c.input;
     // Reachable targets: the library's own output for another input.
     std::vector<double> target(input.size());
     model->clone()->simulate(
-        c.input.empty() ? seeded_input(13, c.low, c.high, input.size()) : c.input, target);
+        c.input.empty() ? test::seeded_input(13, c.low, c.high, input.size(), 0.02) : c.input,
+        target);
 
     CExportOptions options;
     options.prefix = "exported";
@@ -169,9 +141,9 @@ class ExportCTest : public test::TempFolderTest {
         "-lm 2>&1",
         dir_.string(), flags);
     std::string log;
-    ASSERT_EQ(run(compile, &log), 0) << compile << "\n" << log;
+    ASSERT_EQ(test::run_command(compile, &log), 0) << compile << "\n" << log;
     std::string printed;
-    ASSERT_EQ(run(fmt::format("cd '{}' && ./driver", dir_.string()), &printed), 0);
+    ASSERT_EQ(test::run_command(fmt::format("cd '{}' && ./driver", dir_.string()), &printed), 0);
     const auto from_c = numbers_in(printed);
     const auto from_library = library_run(*model, code.has_inverse, limits, input, target);
     ASSERT_EQ(from_c.size(), from_library.size());
@@ -208,9 +180,10 @@ class ExportCTest : public test::TempFolderTest {
         "cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -DNDEBUG -O2 -c exported.c 2>&1",
         dir_.string());
     std::string log;
-    EXPECT_EQ(run(compile, &log), 0) << log;
+    EXPECT_EQ(test::run_command(compile, &log), 0) << log;
     std::string listing;
-    EXPECT_EQ(run(fmt::format("nm -u '{}'", (dir_ / "exported.o").string()), &listing), 0);
+    EXPECT_EQ(
+        test::run_command(fmt::format("nm -u '{}'", (dir_ / "exported.o").string()), &listing), 0);
     std::set<std::string> symbols;
     std::istringstream in(listing);
     std::string kind;

@@ -17,7 +17,9 @@
 #include "../support/allocation_counter.hpp"
 #include "../support/expect_error.hpp"
 #include "../support/fmu_host.hpp"
+#include "../support/shell_command.hpp"
 #include "../support/temp_folder_test.hpp"
+#include "../support/test_signals.hpp"
 #include "hyst/export/export_c.hpp"
 #include "hyst/export/export_fmu.hpp"
 #include "hyst/registry/model_file.hpp"
@@ -29,35 +31,6 @@ namespace {
 using test::Fmu;
 using test::FmuInstance;
 namespace fmi2 = test::fmi2;
-
-int run(const std::string& command, std::string* output = nullptr) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return -1;
-  std::string text;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
-    text += buffer;
-  const int status = ::pclose(pipe);
-  if (output) *output = text;
-  return status;
-}
-
-// A random walk with reversals of all sizes in [low, high], some samples repeated.
-std::vector<double> seeded_input(unsigned seed, double low, double high, std::size_t count) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> input(count);
-  const double span = high - low;
-  double v = low + 0.5 * span;
-  double direction = 1.0;
-  for (auto& x : input) {
-    if (unit(random) < 0.08) direction = -direction;
-    if (unit(random) > 0.05) v += direction * span * 0.04 * unit(random);
-    v = std::clamp(v, low, high);
-    x = v;
-  }
-  return input;
-}
 
 nlohmann::json model_document(std::string_view name, nlohmann::json params) {
   return {{"model", name}, {"version", 1}, {"params", std::move(params)}};
@@ -84,7 +57,7 @@ class ExportFmuTest : public test::TempFolderTest {
   // The model of `document` after 300 samples: the FMU starts from that state, not the default.
   static std::unique_ptr<DynamicModel> warmed_model(const Case& c) {
     auto model = model_from_json(c.document, "test.json");
-    const auto warm = seeded_input(7, c.low, c.high, 300);
+    const auto warm = test::seeded_input(7, c.low, c.high, 300, 0.0);
     std::vector<double> ignored(warm.size());
     model->simulate(warm, ignored);
     return model;
@@ -223,7 +196,7 @@ class ExportFmuTest : public test::TempFolderTest {
     const auto model = warmed_model(c);
     const bool has_inverse = generate_c(*model, {}).has_inverse;
     const auto files = export_fmus(*model, has_inverse, CScalar::double_precision);
-    const auto input = seeded_input(11, c.low, c.high, 1000000);
+    const auto input = test::seeded_input(11, c.low, c.high, 1000000, 0.0);
     std::vector<double> expected(input.size());
     model->clone()->simulate(input, expected);
     const auto fmu = open(files.model);
@@ -234,7 +207,7 @@ class ExportFmuTest : public test::TempFolderTest {
 
     // Reachable targets: the model's output for another input.
     std::vector<double> target(100000);
-    model->clone()->simulate(seeded_input(13, c.low, c.high, target.size()), target);
+    model->clone()->simulate(test::seeded_input(13, c.low, c.high, target.size(), 0.0), target);
     std::vector<double> inverted(target.size());
     model->inverse({})->invert(target, inverted);
     const auto inverse = open(files.inverse);
@@ -336,7 +309,7 @@ TEST_F(ExportFmuTest, ParametersSetBeforeInitialisationChangeTheModel) {
   changed["params"]["offset"] = -0.5;
   changed["params"]["weights"][1] = 0.9;
   auto reference = model_from_json(changed, "changed.json");
-  const auto input = seeded_input(3, -1.0, 1.0, 5000);
+  const auto input = test::seeded_input(3, -1.0, 1.0, 5000);
   std::vector<double> expected(input.size());
   reference->simulate(input, expected);
   FmuInstance instance(
@@ -393,7 +366,7 @@ TEST_F(ExportFmuTest, DirectionalDerivativeIsTheSlopeInTheSeedsDirection) {
 TEST_F(ExportFmuTest, FloatCodeStaysCloseToTheLibrary) {
   const auto model = model_from_json(pi_document(), "test.json");
   const auto files = export_fmus(*model, false, CScalar::single_precision);
-  const auto input = seeded_input(11, -1.0, 1.0, 100000);
+  const auto input = test::seeded_input(11, -1.0, 1.0, 100000);
   std::vector<double> expected(input.size());
   model->clone()->simulate(input, expected);
   expect_agreement(*open(files.model), input, expected, 2e-5);
@@ -424,15 +397,16 @@ TEST_F(ExportFmuTest, SourcesBuildWithoutWarningsAndOnlyTheInterfaceIsExported) 
   const auto model = model_from_json(example_document("gpi"), "test.json");
   const auto fmu = open(export_fmus(*model, false, CScalar::double_precision).model);
   std::string log;
-  EXPECT_EQ(run(fmt::format("cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -c *.c 2>&1",
+  EXPECT_EQ(test::run_command(
+                fmt::format("cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -c *.c 2>&1",
                             (fmu->folder() / "sources").string()),
                 &log),
             0)
       << log;
   std::string symbols;
-  ASSERT_EQ(run(fmt::format("nm -D --defined-only '{}'",
-                            (fmu->folder() / "binaries/linux64/plant.so").string()),
-                &symbols),
+  ASSERT_EQ(test::run_command(fmt::format("nm -D --defined-only '{}'",
+                                          (fmu->folder() / "binaries/linux64/plant.so").string()),
+                              &symbols),
             0);
   std::istringstream in(symbols);
   std::string address;

@@ -2,9 +2,11 @@
 // Inputs shared by the operator and model tests: reversals at many amplitudes (internal loops),
 // with the seed reported by the caller through SCOPED_TRACE.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "hyst/signals/generators.hpp"
@@ -18,6 +20,26 @@ inline std::vector<double> random_walk(std::size_t samples, std::uint64_t seed, 
       signals::TimeGrid{samples, 1.0},
       signals::RandomWalk{
           .max_step = max_step, .lower = -bound, .upper = bound, .start = 0.0, .seed = seed});
+}
+
+// A seeded random walk with reversals of all sizes in [low, high] (widened by `overshoot` of the
+// span on both sides, for inputs a little beyond a model's range), some samples repeated
+// (no-change steps).
+inline std::vector<double> seeded_input(unsigned seed, double low, double high, std::size_t count,
+                                        double overshoot = 0.0) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> input(count);
+  const double span = high - low;
+  double v = low + 0.5 * span;
+  double direction = 1.0;
+  for (auto& x : input) {
+    if (unit(random) < 0.08) direction = -direction;
+    if (unit(random) > 0.05) v += direction * span * 0.04 * unit(random);
+    v = std::clamp(v, low - overshoot * span, high + overshoot * span);
+    x = v;
+  }
+  return input;
 }
 
 // Linear up-sampling: `factor - 1` points inserted on each straight segment.
