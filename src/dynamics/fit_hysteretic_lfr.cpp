@@ -19,7 +19,7 @@ HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
   detail::check_threshold_fractions(options.threshold_fractions, name);
   const detail::FeedbackLfrParametrisation structure(
       linear, detail::signal_scales(experiments, name), options, name);
-  const auto data = detail::realisations(linear, experiments, name);
+  const auto data = detail::realisations(experiments, name);
   auto fit = detail::fit_simulation_error(
       structure, data,
       {"hysteretic_lfr", options.max_iterations, options.threads, options.progress});

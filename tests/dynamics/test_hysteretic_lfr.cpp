@@ -164,6 +164,31 @@ TEST(HystereticLfr, PeriodicStateReturnsToItselfAfterAPeriod) {
   EXPECT_LE((late - first).cwiseAbs().maxCoeff(), 1e-8 * first.cwiseAbs().maxCoeff());
 }
 
+// x+ = 0.999 x + u - 0.01 w, z = x, w = PI(z): a stable loop (pole near 0.985) that forgets
+// slowly, about a factor 0.2 per 100-sample period. The fixed point on w alone diverges here:
+// an error in w moves the open loop's periodic state (pole 0.999) some 6 times as much as the
+// closed loop forgets in a period, so periodic_state has to run periods instead.
+TEST(HystereticLfr, PeriodicStateOfAStableLoopThatForgetsSlowly) {
+  StateSpace::Params p;
+  p.sample_time = 1e-3;
+  p.a = MatrixXd::Constant(1, 1, 0.999);
+  p.b = MatrixXd{{1.0, -0.01}};
+  p.c = MatrixXd{{1.0}, {1.0}};
+  p.d = MatrixXd::Zero(2, 2);
+  const HystereticLfr<PrandtlIshlinskii> lfr(
+      StateSpace(p), 1, {PrandtlIshlinskii({{0.0, 0.5, 1.5}, {1.0, 0.3, 0.1}, 0.0})});
+  const MatrixXd period = random_input(100, 1, 33) * 2.0;
+  const auto start = lfr.periodic_state(period);
+  auto state = start;
+  const MatrixXd first = lfr.simulate(period, state);
+  EXPECT_NEAR(state.x[0], start.x[0], 1e-8 * std::abs(start.x[0]));
+  auto settled = lfr.initial_state();
+  for (int k = 0; k < 300; ++k)
+    lfr.simulate(period, settled);
+  const MatrixXd late = lfr.simulate(period, settled);
+  EXPECT_LE((late - first).cwiseAbs().maxCoeff(), 1e-8 * first.cwiseAbs().maxCoeff());
+}
+
 TEST(HystereticLfr, PeriodicStateOfADivergingLoopSaysSo) {
   const auto lfr = random_lfr(31, 5.0);  // a loop gain far above 1
   const MatrixXd period = random_input(128, 2, 32) * 2.0;

@@ -49,12 +49,19 @@ nlohmann::json scores_json(const std::vector<PeriodicExperiment>& experiments,
                            const std::function<SimulationScore(const PeriodicExperiment&)>& score) {
   nlohmann::json scores = nlohmann::json::array();
   for (std::size_t i = 0; i < experiments.size(); ++i) {
-    const auto result = score(experiments[i]);
-    fmt::print("experiment {} (periodic steady state): relative error {:.3f} % (RMSE {:.6g})\n",
-               i + 1, 100.0 * result.mean_relative_error, result.mean_rmse);
-    scores.push_back({{"experiment", describe_experiment(data, i, experiments[i])},
-                      {"mean_relative_error", result.mean_relative_error},
-                      {"mean_rmse", result.mean_rmse}});
+    const auto experiment = describe_experiment(data, i, experiments[i]);
+    // A fitted model is written even when it cannot be scored: the fit may have taken minutes.
+    try {
+      const auto result = score(experiments[i]);
+      fmt::print("experiment {} (periodic steady state): relative error {:.3f} % (RMSE {:.6g})\n",
+                 i + 1, 100.0 * result.mean_relative_error, result.mean_rmse);
+      scores.push_back({{"experiment", experiment},
+                        {"mean_relative_error", result.mean_relative_error},
+                        {"mean_rmse", result.mean_rmse}});
+    } catch (const Error& error) {
+      fmt::print("experiment {} (periodic steady state): not scored: {}\n", i + 1, error.what());
+      scores.push_back({{"experiment", experiment}, {"error", error.what()}});
+    }
   }
   return scores;
 }

@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -188,12 +189,16 @@ class HystereticLfr {
   }
 
   //! The state that the periodic input `one_period` (N x m, repeated forever) returns to after one
-  //! period, found by a fixed point: run a period, solve the linear block's periodic state for the
-  //! inputs (u, w) of that period exactly (StateSpace::periodic_state), keep the hysteresis
-  //! memories where the period left them, and repeat until w changes by less than the tolerance.
-  //! Throws hyst::Error when it does not converge (naming the iteration limit), for an empty
-  //! period, for the input errors of simulate() and when the linear block has no unique periodic
-  //! state.
+  //! period. First by a fixed point on the hysteresis outputs w: run a period, solve the linear
+  //! block's periodic state for that period's inputs (u, w) exactly (StateSpace::periodic_state),
+  //! keep the hysteresis memories where the period left them, and repeat. That converges in a few
+  //! periods when the feedback is weak next to the linear block's periodic gain; a stable loop
+  //! with strong feedback (the hysteresis carrying part of a stiffness) can make it diverge, so
+  //! once an iteration fails to halve the change, the remaining iterations simply run periods from
+  //! where the last one ended, which converges for every loop that forgets its initial state.
+  //! Done when w over a period changes by less than the tolerance. Throws hyst::Error when it does
+  //! not converge (naming the iteration limit), for an empty period, for the input errors of
+  //! simulate() and when the linear block has no unique periodic state.
   State periodic_state(const Eigen::MatrixXd& one_period,
                        const LfrPeriodicOptions& options = {}) const {
     lfr_detail::require_signal(one_period, inputs_, "one_period");
@@ -208,7 +213,9 @@ class HystereticLfr {
     const Eigen::MatrixXd u = one_period.transpose();
     Eigen::VectorXd y(static_cast<Eigen::Index>(outputs()));
     Eigen::MatrixXd w(samples, q);
-    double change = 0.0;  // relative to the largest |w|
+    bool solve_linear = true;  // the fixed point on w; false: plain periods
+    double change = 0.0;       // relative to the largest |w|
+    double previous_change = std::numeric_limits<double>::infinity();
     for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
       for (Eigen::Index k = 0; k < samples; ++k) {
         step(state, {u.col(k).data(), inputs_}, {y.data(), outputs()});
@@ -220,10 +227,13 @@ class HystereticLfr {
       if (!std::isfinite(change) || !std::isfinite(scale) || scale > kMaxPeriodicMagnitude)
         lfr_detail::throw_not_periodic(iteration + 1, change, options.tolerance);
       linear_input.rightCols(q) = w;
-      // Converged: the period's w (and so the linear state it leads to) reproduces itself.
-      if (iteration > 0 && change <= options.tolerance)
-        return make_state(linear_.periodic_state(linear_input), std::move(state.feedback));
-      state = make_state(linear_.periodic_state(linear_input), std::move(state.feedback));
+      if (solve_linear && iteration > 0 && change > 0.5 * previous_change) solve_linear = false;
+      previous_change = change;
+      // Converged: the period's w (and so the state it leads to) reproduces itself.
+      const bool converged = iteration > 0 && change <= options.tolerance;
+      if (solve_linear)
+        state = make_state(linear_.periodic_state(linear_input), std::move(state.feedback));
+      if (converged) return state;
     }
     lfr_detail::throw_not_periodic(options.max_iterations, change, options.tolerance);
   }

@@ -29,7 +29,8 @@ void add_entries(const std::vector<MatrixEntryDerivative>& entries, const double
 }  // namespace
 
 MatrixXd simulate_with_sensitivities(const LfrPoint& point, Index parameters, const MatrixXd& input,
-                                     const VectorXd& start, const SensitivitySink& sink) {
+                                     HystereticLfr<PrandtlIshlinskii>::State start,
+                                     const SensitivitySink& sink) {
   const auto& model = point.model;
   const auto& lin = model.linear().params();
   const auto& mats = model.matrices();
@@ -48,7 +49,7 @@ MatrixXd simulate_with_sensitivities(const LfrPoint& point, Index parameters, co
   const MatrixXd c_t = lin.c.transpose();
   const MatrixXd b_w_t = mats.b_w.transpose();
   const MatrixXd d_yw_t = mats.d_yw.transpose();
-  auto state = model.make_state(start);
+  auto state = model.make_state(start.x, std::move(start.feedback));
   MatrixXd dx = MatrixXd::Zero(P, n), dx_next(P, n);
   MatrixXd dr(P, p + q), dy(P, p), dw(P, q);
   std::vector<MatrixXd> dplay;  // per channel: parameters x plays

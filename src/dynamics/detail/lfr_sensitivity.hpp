@@ -21,12 +21,13 @@ struct SensitivitySink {
   double* jacobian = nullptr;
 };
 
-// y (N x p) for input (N x m) from linear state `start` with the hysteresis at rest, the outputs
-// computed by the model's own step (the numbers of HystereticLfr::simulate), and their
-// derivatives into `sink`.
+// y (N x p) for input (N x m) from `start` (a state of point.model), the outputs computed by the
+// model's own step (the numbers of HystereticLfr::simulate), and their derivatives into `sink`.
+// The start is taken as given: its derivatives are zero (a warm-up period before the scored
+// samples lets the derivatives build up as the start is forgotten).
 Eigen::MatrixXd simulate_with_sensitivities(const LfrPoint& point, Eigen::Index parameters,
                                             const Eigen::MatrixXd& input,
-                                            const Eigen::VectorXd& start,
+                                            HystereticLfr<PrandtlIshlinskii>::State start,
                                             const SensitivitySink& sink);
 
 }  // namespace hyst::detail

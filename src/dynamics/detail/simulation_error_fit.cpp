@@ -21,7 +21,9 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 
 // Simulated minus measured, weighted, with its Jacobian from the forward sensitivities; false (a
-// step Ceres refuses) for parameters that make no model, make the loop diverge or are not finite.
+// step Ceres refuses) for parameters that make no model, leave the loop without a periodic steady
+// state for this realisation's input (unstable or chaotic: over the two simulated periods such a
+// loop can still look good) or give non-finite values.
 class RealisationCost final : public ceres::CostFunction {
  public:
   RealisationCost(const LfrParametrisation& structure, const Realisation& data)
@@ -34,15 +36,13 @@ class RealisationCost final : public ceres::CostFunction {
                 double** jacobians) const override {
     try {
       const LfrPoint point = structure_.at(parameters[0]);
+      auto start = point.model.periodic_state(data_.input.topRows(data_.warmup));
       double* jacobian = jacobians != nullptr ? jacobians[0] : nullptr;
-      MatrixXd y;
-      if (jacobian != nullptr) {
-        y = simulate_with_sensitivities(point, structure_.size(), data_.input, data_.start,
-                                        {data_.warmup, data_.weight, jacobian});
-      } else {
-        auto state = point.model.make_state(data_.start);
-        y = point.model.simulate(data_.input, state);
-      }
+      const MatrixXd y =
+          jacobian != nullptr
+              ? simulate_with_sensitivities(point, structure_.size(), data_.input, std::move(start),
+                                            {data_.warmup, data_.weight, jacobian})
+              : point.model.simulate(data_.input, start);
       const Index rows = data_.measured.rows(), p = data_.measured.cols();
       for (Index k = 0; k < rows; ++k)
         for (Index c = 0; c < p; ++c) {
@@ -102,8 +102,7 @@ void check_experiments(const StateSpace& linear, std::span<const PeriodicExperim
   }
 }
 
-std::vector<Realisation> realisations(const StateSpace& linear,
-                                      std::span<const PeriodicExperiment> experiments,
+std::vector<Realisation> realisations(std::span<const PeriodicExperiment> experiments,
                                       const std::string& fit) {
   std::vector<Realisation> result;
   for (const auto& x : experiments) {
@@ -126,7 +125,6 @@ std::vector<Realisation> realisations(const StateSpace& linear,
       data.input = realisation_record(x.input, r);
       data.warmup = n;
       data.measured = outputs[r].bottomRows(outputs[r].rows() - n);
-      data.start = linear.periodic_state(data.input.topRows(n));
       data.weight = (deviation * std::sqrt(scored * double(p))).cwiseInverse();
       for (Index c = 0; c < p; ++c)
         if (!std::isfinite(data.weight[c]))
@@ -186,7 +184,7 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
   auto model = structure.at(parameters.data()).model;
   std::vector<double> measured, predicted;
   for (const auto& realisation : data) {
-    auto state = model.make_state(realisation.start);
+    auto state = model.periodic_state(realisation.input.topRows(realisation.warmup));
     const MatrixXd y = model.simulate(realisation.input, state);
     for (Index k = 0; k < realisation.measured.rows(); ++k)
       for (Index c = 0; c < realisation.measured.cols(); ++c) {

@@ -2,9 +2,12 @@
 // The fit shared by the dynamic models with hysteresis (hysteretic LFR, Hammerstein): Levenberg-
 // Marquardt (Ceres) on the free-run simulation error of every realisation of periodic
 // experiments, with the Jacobian from the simulation's forward sensitivities. Each realisation
-// starts in the linear model's periodic state of its first period, that period warms the
-// hysteresis up, and the periods after it are scored, each experiment's channels weighted by
-// 1 / their standard deviation (the benchmark's relative error).
+// starts in the model's own periodic steady state of its first period (HystereticLfr::
+// periodic_state, at every parameter vector tried), so the scored periods are what the periodic
+// score sees; parameters whose loop has no periodic steady state are refused as a failed step.
+// The first period lets the derivatives build up (the start's own derivatives are left out) and
+// the periods after it are scored, each experiment's channels weighted by 1 / their standard
+// deviation (the benchmark's relative error).
 
 #include <cstddef>
 #include <span>
@@ -21,12 +24,11 @@
 
 namespace hyst::detail {
 
-// One realisation: its record, the linear model's periodic state of its first period (where the
-// simulation starts), the measured outputs after the warm-up period and their weights.
+// One realisation: its record (periodic with period `warmup`), the measured outputs after the
+// first period and their weights.
 struct Realisation {
   Eigen::MatrixXd input;
-  Eigen::MatrixXd measured;  // rows from `warmup` on
-  Eigen::VectorXd start;
+  Eigen::MatrixXd measured;   // rows from `warmup` on
   Eigen::RowVectorXd weight;  // per channel
   Eigen::Index warmup = 0;
 };
@@ -39,8 +41,7 @@ void check_experiments(const StateSpace& linear, std::span<const PeriodicExperim
 // Each experiment's channels weighted by 1 / (std * sqrt(scored values of the experiment)), so
 // that the cost is half the sum over experiments of the mean squared relative error. Throws
 // hyst::Error for a constant output.
-std::vector<Realisation> realisations(const StateSpace& linear,
-                                      std::span<const PeriodicExperiment> experiments,
+std::vector<Realisation> realisations(std::span<const PeriodicExperiment> experiments,
                                       const std::string& fit);
 
 // The largest |value| of each input and each output channel over every experiment; throws
@@ -77,7 +78,7 @@ SimulationErrorFit fit_structure(const StateSpace& linear,
   check_experiments(linear, experiments, fit);
   check_threshold_fractions(options.threshold_fractions, fit);
   const Structure structure(linear, signal_scales(experiments, fit), options, fit);
-  return fit_simulation_error(structure, realisations(linear, experiments, fit),
+  return fit_simulation_error(structure, realisations(experiments, fit),
                               {model, options.max_iterations, options.threads, options.progress});
 }
 
