@@ -1,14 +1,20 @@
 #include "simulation_error_fit.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <utility>
+#include <vector>
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
 #include "../../identify/detail/convergence.hpp"
+#include "compressed_least_squares.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/identify/error_metrics.hpp"
@@ -20,47 +26,127 @@ namespace {
 using Eigen::Index;
 using Eigen::MatrixXd;
 
-// Simulated minus measured, weighted, with its Jacobian from the forward sensitivities; false (a
-// step Ceres refuses) for parameters that make no model, leave the loop without a periodic steady
-// state for this realisation's input (unstable or chaotic: over the two simulated periods such a
-// loop can still look good) or give non-finite values.
-class RealisationCost final : public ceres::CostFunction {
+// What one worker thread adds up over the realisations it simulates.
+struct NormalEquations {
+  MatrixXd normal;  // J^T J, lower triangle
+  Eigen::VectorXd gradient;
+  double squares = 0.0;
+  std::vector<double> jacobian;  // one realisation's rows, reused
+};
+
+// The simulation error of every realisation (simulated minus measured, weighted) as one Ceres
+// cost: the realisations are simulated with their forward sensitivities on `threads` threads,
+// each adding its rows to J^T J and J^T r, and Ceres sees the compressed problem
+// (compressed_least_squares.hpp) instead of a Jacobian of a row per measured value. False (a step
+// Ceres refuses) for parameters that make no model, leave the loop without a periodic steady state
+// for a realisation's input (unstable or chaotic: over the two simulated periods such a loop can
+// still look good) or give non-finite values.
+class SimulationErrorCost final : public ceres::CostFunction {
  public:
-  RealisationCost(const LfrParametrisation& structure, const Realisation& data)
-      : structure_(structure), data_(data) {
-    set_num_residuals(int(data.measured.size()));
+  SimulationErrorCost(const LfrParametrisation& structure, std::span<const Realisation> data,
+                      std::size_t threads)
+      : structure_(structure), data_(data), threads_(std::max<std::size_t>(1, threads)) {
+    set_num_residuals(int(structure.size()) + 1);
     mutable_parameter_block_sizes()->push_back(int(structure.size()));
   }
 
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    try {
-      const LfrPoint point = structure_.at(parameters[0]);
-      auto start = point.model.periodic_state(data_.input.topRows(data_.warmup));
-      double* jacobian = jacobians != nullptr ? jacobians[0] : nullptr;
-      const MatrixXd y =
-          jacobian != nullptr
-              ? simulate_with_sensitivities(point, structure_.size(), data_.input, std::move(start),
-                                            {data_.warmup, data_.weight, jacobian})
-              : point.model.simulate(data_.input, start);
-      const Index rows = data_.measured.rows(), p = data_.measured.cols();
-      for (Index k = 0; k < rows; ++k)
-        for (Index c = 0; c < p; ++c) {
-          const double r = (y(data_.warmup + k, c) - data_.measured(k, c)) * data_.weight[c];
-          if (!std::isfinite(r)) return false;
-          residuals[k * p + c] = r;
+    const Index size = structure_.size();
+    const bool with_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
+    // Worker t takes realisations t, t + T, ...: the sums, and so the fit, do not depend on
+    // which thread runs first.
+    const std::size_t count = std::min(threads_, data_.size());
+    std::vector<NormalEquations> sums(count);
+    std::atomic<bool> refused{false};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    const auto work = [&](std::size_t worker) {
+      NormalEquations& sum = sums[worker];
+      try {
+        const LfrPoint point = structure_.at(parameters[0]);
+        if (with_jacobian) {
+          sum.normal = MatrixXd::Zero(size, size);
+          sum.gradient = Eigen::VectorXd::Zero(size);
         }
-      // A non-finite Jacobian entry needs no scan here: Ceres checks every evaluation's residuals
-      // and Jacobian (IsEvaluationValid) and treats a bad one as a failed step.
-      return true;
-    } catch (const Error&) {
-      return false;
+        for (std::size_t i = worker; i < data_.size() && !refused; i += count)
+          if (!add_realisation(point, data_[i], with_jacobian, sum)) refused = true;
+      } catch (const Error&) {
+        refused = true;
+      } catch (...) {
+        const std::lock_guard lock(failure_mutex);
+        failure = std::current_exception();
+        refused = true;
+      }
+    };
+    {
+      std::vector<std::jthread> workers;
+      for (std::size_t t = 1; t < count; ++t)
+        workers.emplace_back(work, t);
+      work(0);
     }
+    if (failure) std::rethrow_exception(failure);
+    if (refused) return false;
+
+    double squares = 0.0;
+    for (const auto& sum : sums)
+      squares += sum.squares;
+    if (!std::isfinite(squares)) return false;
+    Eigen::Map<Eigen::VectorXd> out(residuals, size + 1);
+    if (!with_jacobian) {
+      out.setZero();
+      out[0] = std::sqrt(squares);
+      return true;
+    }
+    MatrixXd normal = MatrixXd::Zero(size, size);
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(size);
+    for (const auto& sum : sums) {
+      normal += sum.normal;
+      gradient += sum.gradient;
+    }
+    normal = normal.selfadjointView<Eigen::Lower>();
+    if (!normal.allFinite() || !gradient.allFinite()) return false;
+    const auto compressed = compress_least_squares(normal, gradient, squares);
+    out = compressed.residuals;
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        jacobians[0], size + 1, size) = compressed.jacobian;
+    return true;
   }
 
  private:
+  // Simulates one realisation from the model's periodic state of its first period; false when a
+  // residual is not finite.
+  bool add_realisation(const LfrPoint& point, const Realisation& data, bool with_jacobian,
+                       NormalEquations& sum) const {
+    const Index size = structure_.size();
+    const Index rows = data.measured.rows(), p = data.measured.cols();
+    auto start = point.model.periodic_state(data.input.topRows(data.warmup));
+    MatrixXd y;
+    if (with_jacobian) {
+      sum.jacobian.resize(std::size_t(rows * p * size));
+      y = simulate_with_sensitivities(point, size, data.input, std::move(start),
+                                      {data.warmup, data.weight, sum.jacobian.data()});
+    } else {
+      y = point.model.simulate(data.input, start);
+    }
+    Eigen::VectorXd r(rows * p);
+    for (Index k = 0; k < rows; ++k)
+      for (Index c = 0; c < p; ++c)
+        r[k * p + c] = (y(data.warmup + k, c) - data.measured(k, c)) * data.weight[c];
+    if (!r.allFinite()) return false;
+    sum.squares += r.squaredNorm();
+    if (with_jacobian) {
+      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+          jacobian(sum.jacobian.data(), rows * p, size);
+      sum.normal.selfadjointView<Eigen::Lower>().rankUpdate(jacobian.transpose());
+      sum.gradient.noalias() += jacobian.transpose() * r;
+    }
+    return true;
+  }
+
   const LfrParametrisation& structure_;
-  const Realisation& data_;
+  std::span<const Realisation> data_;
+  std::size_t threads_;
 };
 
 // Tells the progress callback where Levenberg-Marquardt stands after each iteration.
@@ -164,16 +250,12 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
   const std::string task = options.name + " Levenberg-Marquardt iterations";
   std::vector<double> parameters = structure.initial();
   ceres::Problem problem;
-  for (const auto& realisation : data)
-    problem.AddResidualBlock(new RealisationCost(structure, realisation), nullptr,
-                             parameters.data());
+  problem.AddResidualBlock(new SimulationErrorCost(structure, data, options.threads), nullptr,
+                           parameters.data());
   structure.bound(problem, parameters.data());
   ceres::Solver::Options solver =
       levenberg_marquardt_options(options.max_iterations, kFunctionTolerance);
-  // The normal equations: the Jacobian has hundreds of thousands of rows and a few hundred
-  // columns, where QR costs twice as much and needs no better conditioning (LM damps it).
-  solver.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  solver.num_threads = int(std::max<std::size_t>(1, options.threads));
+  solver.linear_solver_type = ceres::DENSE_QR;  // P + 1 rows: the compressed problem
   IterationProgress progress(options.progress, task, options.max_iterations);
   if (options.progress) solver.callbacks.push_back(&progress);
   ceres::Solver::Summary summary;
