@@ -8,8 +8,9 @@
 //! model. The other weights, the poles of the linear block (when its A is in real modal form, as
 //! fit_state_space returns it) and its B, C and D are fitted jointly by Levenberg-Marquardt
 //! (Ceres, with the Jacobian from the simulation's forward sensitivities) on the free-run
-//! simulation error of every realisation, each period after a warm-up period, each experiment's
-//! channels weighted by 1 / their standard deviation (the benchmark's relative error).
+//! simulation error of every realisation, started in the model's own periodic steady state, each
+//! period after the first scored, each experiment's channels weighted by 1 / their standard
+//! deviation (the benchmark's relative error).
 //!
 //! A hysteresis ahead of the dynamics distorts and scales each input with its amplitude; it cannot
 //! move a resonance (fit_hysteretic_lfr.hpp's feedback can).
