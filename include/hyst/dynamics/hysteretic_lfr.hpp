@@ -47,7 +47,9 @@ struct LfrMatrices {
 
 //! How the periodic steady state of a nonlinear loop is found (HystereticLfr::periodic_state).
 struct LfrPeriodicOptions {
-  std::size_t max_iterations = 50;  //!< fixed-point iterations before giving up
+  //! Fixed-point iterations (periods) before giving up: a loop with a slow mode can need a
+  //! hundred periods to settle to the tolerance.
+  std::size_t max_iterations = 200;
   //! Converged when the hysteresis outputs over a period change by at most this, relative to
   //! their largest magnitude.
   double tolerance = 1e-10;
