@@ -109,6 +109,55 @@ void expect_sensitivities(const LfrParametrisation& structure, const std::vector
   }
 }
 
+// The largest difference between the analytic derivatives of one period simulated from the
+// model's periodic state and central differences of that periodic simulation (each perturbed
+// model from its own periodic state), relative to the column's largest value, over the parameters.
+double periodic_sensitivity_error(const LfrParametrisation& structure,
+                                  const std::vector<double>& theta, bool periodic_start) {
+  const MatrixXd u = input().topRows(128);
+  const LfrPeriodicOptions tight{2000, 1e-13};
+  const Index p = 2, P = structure.size();
+  const Eigen::RowVectorXd weight = (Eigen::RowVectorXd(2) << 1.0, 2.0).finished();
+  std::vector<double> jacobian(std::size_t(u.rows() * p * P));
+  const auto point = structure.at(theta.data());
+  const MatrixXd y =
+      detail::simulate_with_sensitivities(point, P, u, point.model.periodic_state(u, tight),
+                                          {0, weight, jacobian.data(), periodic_start});
+  EXPECT_LT((y - point.model.simulate_periodic(u, tight)).cwiseAbs().maxCoeff(),
+            1e-12 * y.cwiseAbs().maxCoeff())
+      << "the outputs are the model's periodic ones";
+
+  const double h = 1e-6;
+  double worst_relative = 0.0;
+  for (Index j = 0; j < P; ++j) {
+    auto up = theta, down = theta;
+    up[std::size_t(j)] += h;
+    down[std::size_t(j)] -= h;
+    const MatrixXd difference = (structure.at(up.data()).model.simulate_periodic(u, tight) -
+                                 structure.at(down.data()).model.simulate_periodic(u, tight)) /
+                                (2.0 * h);
+    double scale = 0.0, worst = 0.0;
+    for (Index k = 0; k < u.rows(); ++k)
+      for (Index c = 0; c < p; ++c) {
+        const double numeric = difference(k, c) * weight[c];
+        const double analytic = jacobian[std::size_t((k * p + c) * P + j)];
+        scale = std::max(scale, std::abs(numeric));
+        worst = std::max(worst, std::abs(analytic - numeric));
+      }
+    EXPECT_GT(scale, 0.0) << "parameter " << j << " moves the output";
+    worst_relative = std::max(worst_relative, worst / scale);
+  }
+  return worst_relative;
+}
+
+// The periodic derivatives against central differences of the periodic simulation, and the
+// derivatives of the same run with the start taken as given, which miss how the start moves.
+void expect_periodic_sensitivities(const LfrParametrisation& structure,
+                                   const std::vector<double>& theta) {
+  EXPECT_LE(periodic_sensitivity_error(structure, theta, true), 1e-5);
+  EXPECT_GT(periodic_sensitivity_error(structure, theta, false), 1e-2);
+}
+
 detail::SignalScales scales() {
   return {(Eigen::VectorXd(2) << 2.0, 1.5).finished(), (Eigen::VectorXd(2) << 0.5, 0.8).finished()};
 }
@@ -120,6 +169,13 @@ TEST(LfrSensitivity, FeedbackLfrMatchesCentralDifferences) {
   // Theta (4), T (4), 2 x 2 weights, 4 pole parameters, B (8), C (8), D (4).
   EXPECT_EQ(structure.size(), 4 + 4 + 4 + 4 + 8 + 8 + 4);
   expect_sensitivities(structure, moved(structure, 0.2));
+}
+
+TEST(LfrSensitivity, PeriodicFeedbackLfrMatchesCentralDifferences) {
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.3};
+  const detail::FeedbackLfrParametrisation structure(linear_block(), scales(), options, "test");
+  expect_periodic_sensitivities(structure, moved(structure, 0.05));  // 0.2: no periodic state
 }
 
 TEST(LfrSensitivity, GeneralLfrMatchesCentralDifferences) {
@@ -137,6 +193,7 @@ TEST(LfrSensitivity, GeneralLfrMatchesCentralDifferences) {
   EXPECT_LT((same - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff())
       << "it starts where the structured model is";
   expect_sensitivities(general, moved(general, 0.05));
+  expect_periodic_sensitivities(general, moved(general, 0.05));
 }
 
 TEST(LfrSensitivity, HammersteinMatchesCentralDifferences) {
@@ -145,6 +202,7 @@ TEST(LfrSensitivity, HammersteinMatchesCentralDifferences) {
   const detail::HammersteinParametrisation structure(linear_block(), scales(), options, "test");
   EXPECT_EQ(structure.size(), 4 + 4 + 8 + 8 + 4);  // weights, poles, B, C, D
   expect_sensitivities(structure, moved(structure, 0.2));
+  expect_periodic_sensitivities(structure, moved(structure, 0.2));
 }
 
 TEST(LfrSensitivity, TheStartIsTheLinearModel) {

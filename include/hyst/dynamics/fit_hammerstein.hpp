@@ -45,8 +45,8 @@ struct HammersteinFit {
 };
 
 //! Throws hyst::Error for no experiment, experiments whose channel counts differ from the linear
-//! model's, fewer than 2 periods in a realisation (one warms up), thresholds that do not increase
-//! from 0, an input that is zero throughout, or a pole beyond max_pole_radius.
+//! model's, fewer than 2 periods in a realisation (the first is not scored), thresholds that do not
+//! increase from 0, an input that is zero throughout, or a pole beyond max_pole_radius.
 HammersteinFit fit_hammerstein(const StateSpace& linear,
                                std::span<const PeriodicExperiment> experiments,
                                const HammersteinFitOptions& options = {});

@@ -62,8 +62,8 @@ struct HystereticLfrFit {
 };
 
 //! Throws hyst::Error for no experiment, experiments whose channel counts differ from the linear
-//! model's, fewer than 2 periods in a realisation (one warms up), thresholds that do not increase
-//! from 0, or a linear model whose periodic state does not exist.
+//! model's, fewer than 2 periods in a realisation (the first is not scored), thresholds that do not
+//! increase from 0, or a linear model whose periodic state does not exist.
 HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
                                     std::span<const PeriodicExperiment> experiments,
                                     const HystereticLfrFitOptions& options = {});

@@ -19,12 +19,15 @@ struct SensitivitySink {
   Eigen::Index first = 0;
   Eigen::RowVectorXd weight;  // p
   double* jacobian = nullptr;
+  // The start is the model's periodic state for the input (one period, repeated): the derivatives
+  // then include the start's own, from the linearised period map (the run carries the derivatives
+  // by every state value too), so that they are those of the periodic steady state.
+  bool periodic_start = false;
 };
 
 // y (N x p) for input (N x m) from `start` (a state of point.model), the outputs computed by the
 // model's own step (the numbers of HystereticLfr::simulate), and their derivatives into `sink`.
-// The start is taken as given: its derivatives are zero (a warm-up period before the scored
-// samples lets the derivatives build up as the start is forgotten).
+// Unless sink.periodic_start, the start is taken as given: its derivatives are zero.
 Eigen::MatrixXd simulate_with_sensitivities(const LfrPoint& point, Eigen::Index parameters,
                                             const Eigen::MatrixXd& input,
                                             HystereticLfr<PrandtlIshlinskii>::State start,

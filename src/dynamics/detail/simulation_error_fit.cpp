@@ -34,6 +34,13 @@ struct NormalEquations {
   std::vector<double> jacobian;  // one realisation's rows, reused
 };
 
+// Period `scored` of those after the first, simulated from the model's periodic state for its
+// input.
+MatrixXd simulate_scored_period(const HystereticLfr<PrandtlIshlinskii>& model,
+                                const Realisation& data, Index scored) {
+  return model.simulate_periodic(data.input.middleRows((scored + 1) * data.period, data.period));
+}
+
 // The simulation error of every realisation (simulated minus measured, weighted) as one Ceres
 // cost: the realisations are simulated with their forward sensitivities on `threads` threads,
 // each adding its rows to J^T J and J^T r, and Ceres sees the compressed problem
@@ -114,32 +121,32 @@ class SimulationErrorCost final : public ceres::CostFunction {
   }
 
  private:
-  // Simulates one realisation from the model's periodic state of its first period; false when a
-  // residual is not finite.
+  // Adds one realisation's scored periods, each simulated from the model's periodic state for its
+  // own input; false when a residual is not finite.
   bool add_realisation(const LfrPoint& point, const Realisation& data, bool with_jacobian,
                        NormalEquations& sum) const {
     const Index size = structure_.size();
-    const Index rows = data.measured.rows(), p = data.measured.cols();
-    auto start = point.model.periodic_state(data.input.topRows(data.warmup));
-    MatrixXd y;
-    if (with_jacobian) {
-      sum.jacobian.resize(std::size_t(rows * p * size));
-      y = simulate_with_sensitivities(point, size, data.input, std::move(start),
-                                      {data.warmup, data.weight, sum.jacobian.data()});
-    } else {
-      y = point.model.simulate(data.input, start);
-    }
-    Eigen::VectorXd r(rows * p);
-    for (Index k = 0; k < rows; ++k)
-      for (Index c = 0; c < p; ++c)
-        r[k * p + c] = (y(data.warmup + k, c) - data.measured(k, c)) * data.weight[c];
-    if (!r.allFinite()) return false;
-    sum.squares += r.squaredNorm();
-    if (with_jacobian) {
-      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
-          jacobian(sum.jacobian.data(), rows * p, size);
-      sum.normal.selfadjointView<Eigen::Lower>().rankUpdate(jacobian.transpose());
-      sum.gradient.noalias() += jacobian.transpose() * r;
+    const Index n = data.period, p = data.measured.cols();
+    if (with_jacobian) sum.jacobian.resize(std::size_t(n * p * size));
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+        jacobian(sum.jacobian.data(), n * p, size);
+    Eigen::VectorXd r(n * p);
+    for (Index scored = 0; scored * n < data.measured.rows(); ++scored) {
+      const MatrixXd u = data.input.middleRows((scored + 1) * n, n);
+      auto start = point.model.periodic_state(u);
+      const MatrixXd y =
+          with_jacobian ? simulate_with_sensitivities(point, size, u, std::move(start),
+                                                      {0, data.weight, sum.jacobian.data(), true})
+                        : point.model.simulate(u, start);
+      for (Index k = 0; k < n; ++k)
+        for (Index c = 0; c < p; ++c)
+          r[k * p + c] = (y(k, c) - data.measured(scored * n + k, c)) * data.weight[c];
+      if (!r.allFinite()) return false;
+      sum.squares += r.squaredNorm();
+      if (with_jacobian) {
+        sum.normal.selfadjointView<Eigen::Lower>().rankUpdate(jacobian.transpose());
+        sum.gradient.noalias() += jacobian.transpose() * r;
+      }
     }
     return true;
   }
@@ -181,10 +188,10 @@ void check_experiments(const StateSpace& linear, std::span<const PeriodicExperim
           "has {} and {}",
           fit, e, x.input.channels, x.output.channels, linear.inputs(), linear.outputs()));
     if (x.input.periods < 2)
-      throw Error(
-          fmt::format("{}: experiment {} has {} period per realisation; the fit needs 2 "
-                      "or more (the first warms the hysteresis up)",
-                      fit, e, x.input.periods));
+      throw Error(fmt::format(
+          "{}: experiment {} has {} period per realisation; the fit needs 2 "
+          "or more (the first, which may hold the experiment's transient, is not scored)",
+          fit, e, x.input.periods));
   }
 }
 
@@ -209,7 +216,7 @@ std::vector<Realisation> realisations(std::span<const PeriodicExperiment> experi
     for (std::size_t r = 0; r < x.output.realisations; ++r) {
       Realisation data;
       data.input = realisation_record(x.input, r);
-      data.warmup = n;
+      data.period = n;
       data.measured = outputs[r].bottomRows(outputs[r].rows() - n);
       data.weight = (deviation * std::sqrt(scored * double(p))).cwiseInverse();
       for (Index c = 0; c < p; ++c)
@@ -266,13 +273,15 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
   auto model = structure.at(parameters.data()).model;
   std::vector<double> measured, predicted;
   for (const auto& realisation : data) {
-    auto state = model.periodic_state(realisation.input.topRows(realisation.warmup));
-    const MatrixXd y = model.simulate(realisation.input, state);
-    for (Index k = 0; k < realisation.measured.rows(); ++k)
-      for (Index c = 0; c < realisation.measured.cols(); ++c) {
-        measured.push_back(realisation.measured(k, c));
-        predicted.push_back(y(realisation.warmup + k, c));
-      }
+    const Index n = realisation.period;
+    for (Index scored = 0; scored * n < realisation.measured.rows(); ++scored) {
+      const MatrixXd y = simulate_scored_period(model, realisation, scored);
+      for (Index k = 0; k < n; ++k)
+        for (Index c = 0; c < realisation.measured.cols(); ++c) {
+          measured.push_back(realisation.measured(scored * n + k, c));
+          predicted.push_back(y(k, c));
+        }
+    }
   }
   FitReport report;
   report.model = options.name;

@@ -1,12 +1,12 @@
 #pragma once
 // The fit shared by the dynamic models with hysteresis (hysteretic LFR, Hammerstein): Levenberg-
 // Marquardt (Ceres) on the free-run simulation error of every realisation of periodic
-// experiments, with the Jacobian from the simulation's forward sensitivities. Each realisation
-// starts in the model's own periodic steady state of its first period (HystereticLfr::
-// periodic_state, at every parameter vector tried), so the scored periods are what the periodic
-// score sees; parameters whose loop has no periodic steady state are refused as a failed step.
-// The first period lets the derivatives build up (the start's own derivatives are left out) and
-// the periods after it are scored, each experiment's channels weighted by 1 / their standard
+// experiments, with the Jacobian from the simulation's forward sensitivities. The periods after
+// the first are scored (the first may hold the experiment's transient), each simulated over one
+// period from the model's own periodic steady state for that period's input (HystereticLfr::
+// periodic_state, at every parameter vector tried: what the periodic score sees), with the
+// derivatives of that periodic steady state; parameters whose loop has no periodic steady state
+// are refused as a failed step. Each experiment's channels are weighted by 1 / their standard
 // deviation (the benchmark's relative error).
 
 #include <cstddef>
@@ -24,13 +24,13 @@
 
 namespace hyst::detail {
 
-// One realisation: its record (periodic with period `warmup`), the measured outputs after the
-// first period and their weights.
+// One realisation: its whole input record (periods of `period` samples), the measured outputs
+// of the periods after the first and their weights.
 struct Realisation {
   Eigen::MatrixXd input;
-  Eigen::MatrixXd measured;   // rows from `warmup` on
+  Eigen::MatrixXd measured;   // the input's rows from `period` on
   Eigen::RowVectorXd weight;  // per channel
-  Eigen::Index warmup = 0;
+  Eigen::Index period = 0;
 };
 
 // Throws hyst::Error (the message starting with `fit`) for no experiment, experiments whose
