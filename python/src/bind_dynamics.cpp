@@ -148,14 +148,15 @@ void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const ch
   if constexpr (requires { defaults.general_iterations; }) {
     module.def(
         name,
-        [run, options](const StateSpace& linear, const py::sequence& experiments,
-                       const std::string& layout, const std::vector<double>& threshold_fractions,
-                       bool fit_poles, bool fit_io_matrices, double max_pole_radius,
-                       std::size_t max_iterations, std::size_t general_iterations,
-                       std::size_t threads, const py::object& progress) {
+        [run, options](
+            const StateSpace& linear, const py::sequence& experiments, const std::string& layout,
+            const std::vector<double>& threshold_fractions, bool fit_poles, bool fit_io_matrices,
+            double max_pole_radius, std::size_t max_iterations, std::size_t general_iterations,
+            std::size_t feedback_channels, std::size_t threads, const py::object& progress) {
           auto o = options(threshold_fractions, fit_poles, fit_io_matrices, max_pole_radius,
                            max_iterations, threads, progress);
           o.general_iterations = general_iterations;
+          o.feedback_channels = feedback_channels;
           return run(linear, experiments, layout, o);
         },
         "linear"_a, "experiments"_a, "layout"_a = kDefaultLayout,
@@ -163,7 +164,8 @@ void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const ch
         "fit_io_matrices"_a = defaults.fit_io_matrices,
         "max_pole_radius"_a = defaults.max_pole_radius,
         "max_iterations"_a = defaults.max_iterations,
-        "general_iterations"_a = defaults.general_iterations, "threads"_a = defaults.threads,
+        "general_iterations"_a = defaults.general_iterations,
+        "feedback_channels"_a = defaults.feedback_channels, "threads"_a = defaults.threads,
         "progress"_a = py::none(), doc);
   } else {
     module.def(
@@ -382,7 +384,8 @@ void bind_dynamics(py::module_& module) {
          const HystereticLfrFitOptions& o) { return fit_hysteretic_lfr(l, x, o); },
       "A hysteretic LFR fitted from a linear model on the simulation error of periodic "
       "experiments (a sequence of (input, output) arrays whose axes `layout` names): a PI model "
-      "per output in the feedback, jointly with the linear block's poles (fit_poles) and B, C, D "
+      "per output (or feedback_channels of them) in the feedback, jointly with the linear block's "
+      "poles (fit_poles) and B, C, D "
       "(fit_io_matrices), then general_iterations with every matrix of the LFR free; returns "
       "(HystereticLfr, FitReport).");
   def_hysteresis_fit<HammersteinFitOptions>(

@@ -256,6 +256,9 @@ def test_fit_hysteretic_lfr_learns_a_feedback_the_linear_model_lacks():
     alone = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5],
                                     general_iterations=0)
     assert alone.report.parameters == 12  # Theta, T, 3 weights, a pole pair, B (2), C (2), D
+    two = hyst.fit_hysteretic_lfr(linear, experiments, threshold_fractions=[0, 0.1, 0.25, 0.5],
+                                  general_iterations=0, feedback_channels=2)
+    assert two.report.parameters == 17  # Theta (1 x 2), T (2 x 1), 2 x 3 weights, 2, 2, 2, 1
     for u, y in experiments:
         before = hyst.evaluate(linear, u, y, periodic=True)["mean_relative_error"]
         after = hyst.evaluate(result.model, u, y, periodic=True)["mean_relative_error"]

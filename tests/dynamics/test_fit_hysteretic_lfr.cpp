@@ -126,6 +126,31 @@ TEST(FitHystereticLfr, TheStructuredStageAloneFitsTheFeedbackAndTheLinearBlock) 
             1e-12 * m.b_u.norm() * m.b_w.norm());
 }
 
+TEST(FitHystereticLfr, MoreChannelsThanOutputs) {
+  const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  options.general_iterations = 0;
+  options.feedback_channels = 2;
+  const auto structured = fit_hysteretic_lfr(linear_block(), data, options);
+  // Theta (1 x 2), T (2 x 1), 2 x 3 weights, a pole pair, B (2), C (2), D (1).
+  EXPECT_EQ(structured.report.parameters, 2u + 2u + 6u + 2u + 2u + 2u + 1u);
+  ASSERT_EQ(structured.model.feedback().size(), 2u);
+  // Both channels are used, and they are no copies: the second starts at 1.5 times the output
+  // (one output: each z is T times it), and so sees the thresholds at other amplitudes.
+  const auto& m = structured.model.matrices();
+  EXPECT_GT(std::abs(m.b_w(0, 0)), 0.0);
+  EXPECT_GT(std::abs(m.b_w(0, 1)), 0.0);
+  EXPECT_GT(std::abs(m.c_z(1, 0) - m.c_z(0, 0)), 1e-3 * std::abs(m.c_z(0, 0)));
+  EXPECT_LT(structured.report.final_cost, 1e-2 * structured.report.initial_cost);
+
+  options.general_iterations = 20;
+  const auto general = fit_hysteretic_lfr(linear_block(), data, options);
+  // 2 x 3 weights, a pole pair, B 2 x 3, C 3 x 2, D 3 x 3 but its 2 x 2 Dzw.
+  EXPECT_EQ(general.report.parameters, 6u + 2u + 6u + 6u + 5u);
+  EXPECT_LT(general.report.final_cost, 1e-2 * general.report.initial_cost);
+}
+
 TEST(FitHystereticLfr, NamesWhatIsWrong) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1)};
   HystereticLfrFitOptions options;

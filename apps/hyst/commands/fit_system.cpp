@@ -39,6 +39,7 @@ struct FitSystemOptions {
   bool fixed_poles = false;
   bool fixed_io_matrices = false;
   std::size_t general_iterations = HystereticLfrFitOptions{}.general_iterations;
+  std::size_t feedback_channels = 0;  // 0: one per output
   ProgressFlags progress;
   std::string out;
   std::vector<std::string> given;  // the options of the models with hysteresis given
@@ -88,8 +89,10 @@ void fit_hysteretic(const FitSystemOptions& options,
   fit_options.max_iterations = options.hysteresis_iterations;
   fit_options.fit_poles = !options.fixed_poles;
   fit_options.fit_io_matrices = !options.fixed_io_matrices;
-  if constexpr (requires { fit_options.general_iterations; })
+  if constexpr (requires { fit_options.general_iterations; }) {
     fit_options.general_iterations = options.general_iterations;
+    fit_options.feedback_channels = options.feedback_channels;
+  }
   ProgressDisplay display("hyst fit-system", options.progress.mode());
   fit_options.progress = display.callback();
   const auto fit = display.run(fmt::format("fitting {}", options.model),
@@ -133,8 +136,9 @@ void run(const FitSystemOptions& options) {
     throw Error(
         fmt::format("{}: only with --model hysteretic_lfr or hammerstein", options.given[0]));
   for (const auto& name : options.given)
-    if (name == "--general-iterations" && options.model != "hysteretic_lfr")
-      throw Error("--general-iterations: only with --model hysteretic_lfr");
+    if ((name == "--general-iterations" || name == "--feedback-channels") &&
+        options.model != "hysteretic_lfr")
+      throw Error(name + ": only with --model hysteretic_lfr");
   auto inputs = dynamic_data_inputs(options.data);
   if (!options.linear.empty()) inputs.push_back({options.linear, "--linear"});
   io::check_outputs(inputs, {{options.out, "--out"}});
@@ -239,6 +243,10 @@ void add_fit_system_command(CLI::App& app) {
               "hysteretic_lfr: then Levenberg-Marquardt iterations with every matrix of the "
               "LFR free (0: none)")
           ->capture_default_str());
+  hysteresis_options.push_back(command->add_option(
+      "--feedback-channels", options->feedback_channels,
+      "hysteretic_lfr: hysteresis channels in the feedback (default: one per output; channel "
+      "i = k p + j starts driven by output j and, for k > 0, half of output (j + k) mod p)"));
   hysteresis_options.push_back(
       command->add_flag("--fixed-poles", options->fixed_poles,
                         "hysteretic_lfr, hammerstein: keep the linear model's poles"));

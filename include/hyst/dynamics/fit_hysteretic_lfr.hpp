@@ -7,7 +7,7 @@
 //! feedback is
 //!
 //!     z = T (Cy x + Dyu u)                  (T: q x p, the elongations from the outputs)
-//!     w_i = PI_i[z_i]                       (one PI model per channel, q = p)
+//!     w_i = PI_i[z_i]                       (one PI model per channel, q = p by default)
 //!     u_eff = u + Theta w                   (Theta: m x q, enters where the inputs do)
 //!
 //! i.e. the LFR's linear block has Bw = Bu Theta, Dyw = Dyu Theta, Cz = T Cy, Dzu = T Dyu. With
@@ -45,6 +45,10 @@ struct HystereticLfrFitOptions {
   //! longer follow B, C and D through Theta and T, so the fit finds where in the structure the
   //! hysteresis acts (fit_poles still decides on the poles). 0: the structure above only.
   std::size_t general_iterations = 20;
+  //! Hysteresis channels q; 0: one per output. Channel i = k p + j starts driven by output j, and
+  //! for k > 0 also by half of output (j + k) mod p: the channels must differ, or they would stay
+  //! copies of each other.
+  std::size_t feedback_channels = 0;
   std::size_t threads = 2;  //!< realisations simulated in parallel
   //! Fit the poles of the linear block too (radius and angle of each), when its A is in real modal
   //! form (fit_state_space's is): the feedback then shifts the resonances around poles that need

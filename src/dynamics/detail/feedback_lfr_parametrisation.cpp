@@ -18,12 +18,20 @@ FeedbackLfrParametrisation::FeedbackLfrParametrisation(const StateSpace& linear,
       input_scale_(scales.input.maxCoeff()),
       thresholds_(options.threshold_fractions),
       m_(Index(linear.inputs())),
-      p_(Index(linear.outputs())) {}
+      p_(Index(linear.outputs())),
+      q_(options.feedback_channels > 0 ? Index(options.feedback_channels) : p_) {}
 
 std::vector<double> FeedbackLfrParametrisation::initial() const {
   std::vector<double> theta(std::size_t(size()), 0.0);
-  for (Index i = 0; i < q(); ++i)
-    theta[std::size_t(m_ * q() + i * q() + i)] = 1.0;  // T = I
+  // T = I for q = p; channel i = k p + j: output j, plus half of output (j + k) mod p for k > 0.
+  const auto t = [&](Index row, Index col) -> double& {
+    return theta[std::size_t(m_ * q() + row + col * q())];
+  };
+  for (Index i = 0; i < q(); ++i) {
+    const Index k = i / p_, j = i % p_;
+    t(i, j) = 1.0;
+    if (k > 0) t(i, (j + k) % p_) += 0.5;
+  }
   return theta;
 }
 

@@ -32,7 +32,7 @@ class FeedbackLfrParametrisation final : public LfrParametrisation {
   std::string description() const override;
 
  private:
-  Eigen::Index q() const { return p_; }
+  Eigen::Index q() const { return q_; }
   Eigen::Index feedback_size() const {
     return m_ * q() + q() * p_ + q() * Eigen::Index(thresholds_.size() - 1);
   }
@@ -41,7 +41,7 @@ class FeedbackLfrParametrisation final : public LfrParametrisation {
   Eigen::VectorXd to_z_;  // 1 / the largest |y_k| over the data
   double input_scale_;    // the largest |u| over the data
   std::vector<double> thresholds_;
-  Eigen::Index m_, p_;
+  Eigen::Index m_, p_, q_;
 };
 
 }  // namespace hyst::detail
