@@ -8,6 +8,7 @@
 #include "detail/feedback_lfr_parametrisation.hpp"
 #include "detail/general_lfr_parametrisation.hpp"
 #include "detail/simulation_error_fit.hpp"
+#include "hyst/core/error.hpp"
 
 namespace hyst {
 
@@ -17,6 +18,9 @@ HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
   const std::string name = "hysteretic LFR fit";
   detail::check_experiments(linear, experiments, name);
   detail::check_threshold_fractions(options.threshold_fractions, name);
+  if (options.feedback_channels > kMaxFeedbackChannels)
+    throw Error(fmt::format("{}: feedback_channels = {} is above the limit of {}", name,
+                            options.feedback_channels, kMaxFeedbackChannels));
   const detail::FeedbackLfrParametrisation structure(
       linear, detail::signal_scales(experiments, name), options, name);
   const auto data = detail::realisations(experiments, name);

@@ -160,6 +160,10 @@ TEST(FitHystereticLfr, NamesWhatIsWrong) {
   EXPECT_HYST_ERROR(fit_hysteretic_lfr(linear_block(), data, options),
                     "threshold_fractions[2] = 0.2 must be finite and above the one before");
   EXPECT_HYST_ERROR(fit_hysteretic_lfr(linear_block(), {}, {}), "no experiment");
+  HystereticLfrFitOptions too_many;
+  too_many.feedback_channels = kMaxFeedbackChannels + 1;
+  EXPECT_HYST_ERROR(fit_hysteretic_lfr(linear_block(), data, too_many),
+                    "feedback_channels = 65 is above the limit of 64");
   auto one_period = data;
   one_period[0].input.periods = one_period[0].output.periods = 1;
   one_period[0].input.realisations = one_period[0].output.realisations = 6;

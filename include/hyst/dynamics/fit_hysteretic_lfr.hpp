@@ -37,6 +37,10 @@
 
 namespace hyst {
 
+//! The most hysteresis channels a fit takes: the fit's cost grows with the square of its
+//! parameters, about 2 n + 10 per channel for n states.
+inline constexpr std::size_t kMaxFeedbackChannels = 64;
+
 struct HystereticLfrFitOptions {
   //! PI thresholds as fractions of the largest |z_i|, increasing from 0.
   std::vector<double> threshold_fractions = {0.0, 0.02, 0.05, 0.1, 0.2, 0.4};
@@ -47,7 +51,7 @@ struct HystereticLfrFitOptions {
   std::size_t general_iterations = 20;
   //! Hysteresis channels q; 0: one per output. Channel i = k p + j starts driven by output j, and
   //! for k > 0 also by half of output (j + k) mod p: the channels must differ, or they would stay
-  //! copies of each other.
+  //! copies of each other. At most kMaxFeedbackChannels.
   std::size_t feedback_channels = 0;
   std::size_t threads = 2;  //!< realisations simulated in parallel
   //! Fit the poles of the linear block too (radius and angle of each), when its A is in real modal
@@ -67,7 +71,8 @@ struct HystereticLfrFit {
 
 //! Throws hyst::Error for no experiment, experiments whose channel counts differ from the linear
 //! model's, fewer than 2 periods in a realisation (the first is not scored), thresholds that do not
-//! increase from 0, or a linear model whose periodic state does not exist.
+//! increase from 0, more than kMaxFeedbackChannels channels, or a linear model whose periodic
+//! state does not exist.
 HystereticLfrFit fit_hysteretic_lfr(const StateSpace& linear,
                                     std::span<const PeriodicExperiment> experiments,
                                     const HystereticLfrFitOptions& options = {});
