@@ -34,11 +34,9 @@ struct NormalEquations {
   std::vector<double> jacobian;  // one realisation's rows, reused
 };
 
-// Period `scored` of those after the first, simulated from the model's periodic state for its
-// input.
-MatrixXd simulate_scored_period(const HystereticLfr<PrandtlIshlinskii>& model,
-                                const Realisation& data, Index scored) {
-  return model.simulate_periodic(data.input.middleRows((scored + 1) * data.period, data.period));
+// The input of period `scored` of those after the first.
+auto scored_input(const Realisation& data, Index scored) {
+  return data.input.middleRows((scored + 1) * data.period, data.period);
 }
 
 // The simulation error of every realisation (simulated minus measured, weighted) as one Ceres
@@ -132,7 +130,7 @@ class SimulationErrorCost final : public ceres::CostFunction {
         jacobian(sum.jacobian.data(), n * p, size);
     Eigen::VectorXd r(n * p);
     for (Index scored = 0; scored * n < data.measured.rows(); ++scored) {
-      const MatrixXd u = data.input.middleRows((scored + 1) * n, n);
+      const MatrixXd u = scored_input(data, scored);
       auto start = point.model.periodic_state(u);
       const MatrixXd y =
           with_jacobian ? simulate_with_sensitivities(point, size, u, std::move(start),
@@ -275,7 +273,7 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
   for (const auto& realisation : data) {
     const Index n = realisation.period;
     for (Index scored = 0; scored * n < realisation.measured.rows(); ++scored) {
-      const MatrixXd y = simulate_scored_period(model, realisation, scored);
+      const MatrixXd y = model.simulate_periodic(scored_input(realisation, scored));
       for (Index k = 0; k < n; ++k)
         for (Index c = 0; c < realisation.measured.cols(); ++c) {
           measured.push_back(realisation.measured(scored * n + k, c));
