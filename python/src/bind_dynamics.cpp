@@ -386,8 +386,8 @@ void bind_dynamics(py::module_& module) {
       "experiments (a sequence of (input, output) arrays whose axes `layout` names): a PI model "
       "per output (or feedback_channels of them) in the feedback, jointly with the linear block's "
       "poles (fit_poles) and B, C, D "
-      "(fit_io_matrices), then general_iterations with every matrix of the LFR free; returns "
-      "(HystereticLfr, FitReport).");
+      "(fit_io_matrices), then general_iterations with every matrix of the LFR free (both count "
+      "accepted Levenberg-Marquardt steps); returns (HystereticLfr, FitReport).");
   def_hysteresis_fit<HammersteinFitOptions>(
       module, "fit_hammerstein",
       [](const StateSpace& l, const std::vector<PeriodicExperiment>& x,

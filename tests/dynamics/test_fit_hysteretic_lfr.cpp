@@ -151,6 +151,21 @@ TEST(FitHystereticLfr, MoreChannelsThanOutputs) {
   EXPECT_LT(general.report.final_cost, 1e-2 * general.report.initial_cost);
 }
 
+// The limit counts accepted steps, each with its Jacobian; rejected trial steps come on top.
+TEST(FitHystereticLfr, IterationsCountAcceptedSteps) {
+  const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  options.max_iterations = 3;
+  options.general_iterations = 0;
+  const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
+  EXPECT_EQ(fit.report.iterations, 3u);
+  EXPECT_EQ(fit.report.termination, Termination::max_iterations);
+  EXPECT_NE(fit.report.message.find("Limit of 3 accepted steps reached"), std::string::npos)
+      << fit.report.message;
+  EXPECT_LT(fit.report.final_cost, fit.report.initial_cost);
+}
+
 TEST(FitHystereticLfr, NamesWhatIsWrong) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1)};
   HystereticLfrFitOptions options;

@@ -233,15 +233,15 @@ void add_fit_system_command(CLI::App& app) {
   hysteresis_options.push_back(
       command
           ->add_option("--hysteresis-iterations,--lfr-iterations", options->hysteresis_iterations,
-                       "hysteretic_lfr, hammerstein: Levenberg-Marquardt iterations on the "
-                       "simulation error")
+                       "hysteretic_lfr, hammerstein: accepted Levenberg-Marquardt steps on the "
+                       "simulation error (one Jacobian each; rejected trial steps not counted)")
           ->capture_default_str());
   hysteresis_options.push_back(
       command
           ->add_option(
               "--general-iterations", options->general_iterations,
-              "hysteretic_lfr: then Levenberg-Marquardt iterations with every matrix of the "
-              "LFR free (0: none)")
+              "hysteretic_lfr: then accepted Levenberg-Marquardt steps with every matrix of "
+              "the LFR free (0: none)")
           ->capture_default_str());
   hysteresis_options.push_back(command->add_option(
       "--feedback-channels", options->feedback_channels,

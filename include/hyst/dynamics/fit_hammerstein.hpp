@@ -31,7 +31,9 @@ namespace hyst {
 struct HammersteinFitOptions {
   //! PI thresholds as fractions of the largest |u_i|, increasing from 0.
   std::vector<double> threshold_fractions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.7};
-  std::size_t max_iterations = 30;   //!< Levenberg-Marquardt iterations
+  //! Accepted Levenberg-Marquardt steps (one Jacobian each; rejected trial steps cost one
+  //! simulation each and are not counted).
+  std::size_t max_iterations = 30;
   std::size_t threads = 2;           //!< realisations simulated in parallel
   bool fit_poles = true;             //!< fit the linear block's poles (real modal form)
   bool fit_io_matrices = true;       //!< fit its B, C and D

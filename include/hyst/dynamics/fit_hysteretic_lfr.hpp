@@ -44,10 +44,13 @@ inline constexpr std::size_t kMaxFeedbackChannels = 64;
 struct HystereticLfrFitOptions {
   //! PI thresholds as fractions of the largest |z_i|, increasing from 0.
   std::vector<double> threshold_fractions = {0.0, 0.02, 0.05, 0.1, 0.2, 0.4};
-  std::size_t max_iterations = 30;  //!< Levenberg-Marquardt iterations in the structure above
-  //! Then this many with every matrix of the LFR free: the feedback paths Bw, Cz, Dyw and Dzu no
-  //! longer follow B, C and D through Theta and T, so the fit finds where in the structure the
-  //! hysteresis acts (fit_poles still decides on the poles). 0: the structure above only.
+  //! Accepted Levenberg-Marquardt steps in the structure above (one Jacobian each; rejected trial
+  //! steps cost one simulation each and are not counted).
+  std::size_t max_iterations = 30;
+  //! Then this many accepted steps with every matrix of the LFR free: the feedback paths Bw, Cz,
+  //! Dyw and Dzu no longer follow B, C and D through Theta and T, so the fit finds where in the
+  //! structure the hysteresis acts (fit_poles still decides on the poles). 0: the structure above
+  //! only.
   std::size_t general_iterations = 20;
   //! Hysteresis channels q; 0: one per output. Channel i = k p + j starts driven by output j, and
   //! for k > 0 also by half of output (j + k) mod p: the channels must differ, or they would stay

@@ -51,8 +51,13 @@ struct SignalScales {
 };
 SignalScales signal_scales(std::span<const PeriodicExperiment> experiments, const std::string& fit);
 
+// Bound on the Levenberg-Marquardt trial steps of a fit, per accepted step allowed.
+inline constexpr std::size_t kTrialStepsPerAcceptedStep = 20;
+
 struct SimulationErrorFitOptions {
   std::string name;  // the Progress task and the report's model, e.g. "hysteretic_lfr"
+  // Accepted Levenberg-Marquardt steps (one Jacobian each); rejected trial steps, one simulation
+  // each, are not counted (at most kTrialStepsPerAcceptedStep trial steps per accepted one).
   std::size_t max_iterations = 30;
   std::size_t threads = 2;
   ProgressCallback progress{};
