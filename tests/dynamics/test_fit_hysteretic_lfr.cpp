@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/expect_error.hpp"
+#include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 
 namespace hyst::fit_hysteretic_lfr_test {
@@ -151,6 +152,24 @@ TEST(FitHystereticLfr, MoreChannelsThanOutputs) {
   EXPECT_LT(general.report.final_cost, 1e-2 * general.report.initial_cost);
 }
 
+// Started from a linear model fitted to the same single experiment (its frequency response, which
+// for periodic data is its simulation error), the fit must still leave the start: that model
+// minimises every linear change, so the start would be a stationary point if Theta's derivative
+// had no hysteresis in it (feedback_lfr_parametrisation.cpp).
+TEST(FitHystereticLfr, LeavesALinearModelFittedToTheSameExperiment) {
+  const std::vector<PeriodicExperiment> data = {experiment(3.0, 2)};
+  StateSpaceFitOptions linear_options;
+  linear_options.order = 2;
+  const auto linear = fit_state_space(estimate_bla(data, kTs), linear_options).model;
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  options.max_iterations = 10;
+  options.general_iterations = 0;
+  const auto fit = fit_hysteretic_lfr(linear, data, options);
+  EXPECT_GT(fit.report.iterations, 0u) << fit.report.message;
+  EXPECT_LT(fit.report.final_cost, 0.1 * fit.report.initial_cost) << fit.report.message;
+}
+
 // The limit counts accepted steps, each with its Jacobian; rejected trial steps come on top.
 TEST(FitHystereticLfr, IterationsCountAcceptedSteps) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
@@ -164,6 +183,22 @@ TEST(FitHystereticLfr, IterationsCountAcceptedSteps) {
   EXPECT_NE(fit.report.message.find("Limit of 3 accepted steps reached"), std::string::npos)
       << fit.report.message;
   EXPECT_LT(fit.report.final_cost, fit.report.initial_cost);
+}
+
+// A pole that an earlier fit left on max_pole_radius comes back from the model an ulp or so above
+// it; the next fit takes it as on the bound, and refuses a pole clearly above it.
+TEST(FitHystereticLfr, APoleOnTheBoundIsNoPoleAboveIt) {
+  const std::vector<PeriodicExperiment> data = {experiment(3.0, 2)};
+  HystereticLfrFitOptions options;
+  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  options.max_iterations = 2;
+  options.general_iterations = 0;
+  options.max_pole_radius = 0.97 / (1.0 + 1e-14);  // the mode's radius is 0.97
+  const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
+  EXPECT_LT(fit.report.final_cost, fit.report.initial_cost);
+  options.max_pole_radius = 0.97 / (1.0 + 1e-9);
+  EXPECT_HYST_ERROR(fit_hysteretic_lfr(linear_block(), data, options),
+                    "a pole of the linear model has magnitude 0.97");
 }
 
 TEST(FitHystereticLfr, NamesWhatIsWrong) {

@@ -11,18 +11,18 @@
 //!     u_eff = u + Theta w                   (Theta: m x q, enters where the inputs do)
 //!
 //! i.e. the LFR's linear block has Bw = Bu Theta, Dyw = Dyu Theta, Cz = T Cy, Dzu = T Dyu. With
-//! Theta = 0 it is the linear model. Each PI has thresholds at fixed fractions of the largest
-//! |z_i| over the data (the first 0, its weight held at 1: it is the linear stiffness change, the
-//! others make it depend on the amplitude); Theta, T and the other weights are fitted by
+//! Theta = 0 it is the linear model. Each PI has thresholds at fixed fractions of the largest |z_i|
+//! over the data (the first 0, its weight held at 1: it is the linear stiffness change, the others,
+//! starting at 0.1, make it depend on the amplitude); Theta, T and the other weights are fitted by
 //! Levenberg-Marquardt (Ceres, with the Jacobian from the simulation's forward sensitivities) on
 //! the free-run simulation error of every realisation, started in the model's own periodic steady
 //! state (HystereticLfr::periodic_state, at every parameter vector tried: a vector whose loop has
 //! none for a training input is refused), each period after the first scored, each experiment's
-//! channels weighted by 1 / their standard deviation (the benchmark's relative error, so the
-//! fitted cost is the periodic score). With fit_poles, the poles of the linear block (in real modal
-//! form) are fitted with them, and with fit_io_matrices its B, C and D: all parameters jointly.
-//! Then (general_iterations) every matrix of the LFR is freed from that structure and fitted on,
-//! from where it ended.
+//! channels weighted by 1 / their standard deviation (the benchmark's relative error, so the fitted
+//! cost is the periodic score). With fit_poles, the poles of the linear block (in real modal form)
+//! are fitted with them, and with fit_io_matrices its B, C and D: all parameters jointly. Then
+//! (general_iterations) every matrix of the LFR is freed from that structure and fitted on, from
+//! where it ended.
 
 #include <cstddef>
 #include <span>

@@ -1,5 +1,6 @@
 #include "feedback_lfr_parametrisation.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include <fmt/format.h>
@@ -32,6 +33,12 @@ std::vector<double> FeedbackLfrParametrisation::initial() const {
     t(i, j) = 1.0;
     if (k > 0) t(i, (j + k) % p_) += 0.5;
   }
+  // The plays r > 0 start weighted: with Theta = 0 the start is the linear model whatever the
+  // weights, and they give Theta's derivative the hysteresis' shape. With them zero, a linear
+  // model that already minimises the simulation error (one experiment, its frequency response
+  // fitted) is a stationary point: Theta's derivative is then that of a linear feedback, zero at
+  // that optimum, and the weights' and T's derivatives vanish with Theta.
+  std::fill(theta.begin() + m_ * q() + q() * p_, theta.begin() + feedback_size(), kStartPlayWeight);
   return theta;
 }
 

@@ -19,7 +19,11 @@ namespace hyst::detail {
 // u_eff = u + input_scale Theta w.
 class FeedbackLfrParametrisation final : public LfrParametrisation {
  public:
-  // Starts at Theta = 0, T = I: the linear model. Throws hyst::Error as LinearBlockParameters.
+  // The starting weight of every play r > 0 (the r = 0 one is held at 1).
+  static constexpr double kStartPlayWeight = 0.1;
+
+  // Starts at Theta = 0, T = I: the linear model (see initial() for why the weights of the plays
+  // r > 0 start at kStartPlayWeight). Throws hyst::Error as LinearBlockParameters.
   FeedbackLfrParametrisation(const StateSpace& linear, const SignalScales& scales,
                              const HystereticLfrFitOptions& options, const std::string& fit);
 

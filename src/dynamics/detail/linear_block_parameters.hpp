@@ -18,6 +18,9 @@ namespace hyst::detail {
 
 class LinearBlockParameters {
  public:
+  // Relative excess over max_pole_radius taken as rounding of a pole that lies on the bound.
+  static constexpr double kPoleRadiusRounding = 1e-12;
+
   // Throws hyst::Error (the message starting with `fit`) when a pole that is freed has a magnitude
   // above max_pole_radius. Poles are kept when A is not in real modal form. The bottom-right
   // zero_corner x zero_corner block of D is no parameter.
