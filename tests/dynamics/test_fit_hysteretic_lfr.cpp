@@ -73,11 +73,18 @@ PeriodicExperiment experiment(double rms, std::uint64_t seed) {
   return x;
 }
 
-TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
-  const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
+// The thresholds of these tests; general_iterations = 0: the structured stage alone.
+HystereticLfrFitOptions fit_options(std::size_t general_iterations = 0) {
   HystereticLfrFitOptions options;
   options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
-  const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
+  options.general_iterations = general_iterations;
+  return options;
+}
+
+TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
+  const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
+  const auto fit = fit_hysteretic_lfr(linear_block(), data,
+                                      fit_options(HystereticLfrFitOptions{}.general_iterations));
   // Then every matrix free: 3 weights, a pole pair, B 2 x 2, C 2 x 2, D 2 x 2 but Dzw.
   EXPECT_EQ(fit.report.parameters, 3u + 2u + 4u + 4u + 3u);
   EXPECT_NE(fit.report.method.find("then of the PI weights (4 plays per channel) and every matrix"),
@@ -113,9 +120,7 @@ TEST(FitHystereticLfr, ServesBothAmplitudesWhereTheLinearModelCannot) {
 
 TEST(FitHystereticLfr, TheStructuredStageAloneFitsTheFeedbackAndTheLinearBlock) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
-  HystereticLfrFitOptions options;
-  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
-  options.general_iterations = 0;
+  auto options = fit_options();
   const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
   // Theta, T, 3 weights, a pole pair, B (2), C (2), D (1).
   EXPECT_EQ(fit.report.parameters, 1u + 1u + 3u + 2u + 2u + 2u + 1u);
@@ -129,9 +134,7 @@ TEST(FitHystereticLfr, TheStructuredStageAloneFitsTheFeedbackAndTheLinearBlock) 
 
 TEST(FitHystereticLfr, MoreChannelsThanOutputs) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
-  HystereticLfrFitOptions options;
-  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
-  options.general_iterations = 0;
+  auto options = fit_options();
   options.feedback_channels = 2;
   const auto structured = fit_hysteretic_lfr(linear_block(), data, options);
   // Theta (1 x 2), T (2 x 1), 2 x 3 weights, a pole pair, B (2), C (2), D (1).
@@ -161,10 +164,8 @@ TEST(FitHystereticLfr, LeavesALinearModelFittedToTheSameExperiment) {
   StateSpaceFitOptions linear_options;
   linear_options.order = 2;
   const auto linear = fit_state_space(estimate_bla(data, kTs), linear_options).model;
-  HystereticLfrFitOptions options;
-  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  auto options = fit_options();
   options.max_iterations = 10;
-  options.general_iterations = 0;
   const auto fit = fit_hysteretic_lfr(linear, data, options);
   EXPECT_GT(fit.report.iterations, 0u) << fit.report.message;
   EXPECT_LT(fit.report.final_cost, 0.1 * fit.report.initial_cost) << fit.report.message;
@@ -173,10 +174,8 @@ TEST(FitHystereticLfr, LeavesALinearModelFittedToTheSameExperiment) {
 // The limit counts accepted steps, each with its Jacobian; rejected trial steps come on top.
 TEST(FitHystereticLfr, IterationsCountAcceptedSteps) {
   const std::vector<PeriodicExperiment> data = {experiment(0.5, 1), experiment(3.0, 2)};
-  HystereticLfrFitOptions options;
-  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  auto options = fit_options();
   options.max_iterations = 3;
-  options.general_iterations = 0;
   const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
   EXPECT_EQ(fit.report.iterations, 3u);
   EXPECT_EQ(fit.report.termination, Termination::max_iterations);
@@ -189,10 +188,8 @@ TEST(FitHystereticLfr, IterationsCountAcceptedSteps) {
 // it; the next fit takes it as on the bound, and refuses a pole clearly above it.
 TEST(FitHystereticLfr, APoleOnTheBoundIsNoPoleAboveIt) {
   const std::vector<PeriodicExperiment> data = {experiment(3.0, 2)};
-  HystereticLfrFitOptions options;
-  options.threshold_fractions = {0.0, 0.1, 0.25, 0.5};
+  auto options = fit_options();
   options.max_iterations = 2;
-  options.general_iterations = 0;
   options.max_pole_radius = 0.97 / (1.0 + 1e-14);  // the mode's radius is 0.97
   const auto fit = fit_hysteretic_lfr(linear_block(), data, options);
   EXPECT_LT(fit.report.final_cost, fit.report.initial_cost);

@@ -163,13 +163,15 @@ class AcceptedStepLimit final : public ceres::IterationCallback {
       : progress_(progress), task_(std::move(task)), limit_(limit) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    if (summary.iteration > 0 && summary.step_is_successful) ++accepted_;
+    if (summary.step_is_successful) {
+      if (summary.iteration > 0) ++accepted_;
+      cost_ = summary.cost;  // a rejected step's summary holds the refused trial's cost
+    }
     if (accepted_ >= limit_) {
       reached_ = true;
       return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
-    if (progress_)
-      progress_(Progress{task_, accepted_, limit_, fmt::format("cost {:.6g}", summary.cost)});
+    if (progress_) progress_(Progress{task_, accepted_, limit_, fmt::format("cost {:.6g}", cost_)});
     return ceres::SOLVER_CONTINUE;
   }
 
@@ -181,6 +183,7 @@ class AcceptedStepLimit final : public ceres::IterationCallback {
   std::string task_;
   std::size_t limit_;
   std::size_t accepted_ = 0;
+  double cost_ = 0.0;  // at the last accepted point
   bool reached_ = false;
 };
 
