@@ -283,8 +283,8 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
   // With bounds, Ceres follows each step by a projected line search that evaluates the Jacobian
   // at its trial points (three Jacobians per step instead of one) and, on these fits, slows the
   // descent down (FSM, 6 channels, first stage: cost 0.0310 after 4 accepted steps with it, 0.0164
-  // after 7 without it, in 62 s and 36 s).
-  // Without it a step that leaves the bounds is projected onto them and judged like any other.
+  // after 7 without it, in 62 s and 36 s). Without it a step that leaves the bounds is projected
+  // onto them and judged like any other.
   solver.max_num_line_search_step_size_iterations = 0;
   AcceptedStepLimit limit(options.progress, task, options.max_iterations);
   solver.callbacks.push_back(&limit);
@@ -312,14 +312,17 @@ SimulationErrorFit fit_simulation_error(const LfrParametrisation& structure,
       "Levenberg-Marquardt (Ceres, Jacobian by forward sensitivities) on the simulation error, "
       "of {}",
       structure.description());
-  report.termination = options.max_iterations == 0 ? Termination::converged
-                       : limit.reached()           ? Termination::max_iterations
-                                                   : termination_of_ceres(summary);
-  report.message = options.max_iterations == 0 ? "not refined"
-                   : limit.reached()
-                       ? fmt::format("Limit of {} accepted steps reached ({} trial steps in all).",
-                                     options.max_iterations, summary.iterations.size() - 1)
-                       : summary.message;
+  if (options.max_iterations == 0) {
+    report.termination = Termination::converged;
+    report.message = "not refined";
+  } else if (limit.reached()) {
+    report.termination = Termination::max_iterations;
+    report.message = fmt::format("Limit of {} accepted steps reached ({} trial steps in all).",
+                                 options.max_iterations, summary.iterations.size() - 1);
+  } else {
+    report.termination = termination_of_ceres(summary);
+    report.message = summary.message;
+  }
   report.iterations = limit.accepted();
   report.initial_cost = summary.initial_cost;
   report.final_cost = summary.final_cost;
