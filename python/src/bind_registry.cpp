@@ -17,6 +17,7 @@
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
+#include "hyst/registry/record_score.hpp"
 
 namespace hyst::python {
 namespace {
@@ -289,6 +290,42 @@ void bind_registry(py::module_& module) {
                            m.state().dump());
       });
 
+  module.def(
+      "evaluate",
+      [](const DynamicModel& m, const InputArray& input, const InputArray& output,
+         std::string_view validation_start, std::string_view validation_align) {
+        const auto u = as_vector(input, "input");
+        const auto y = as_vector(output, "output");
+        const auto rule = saved_model_rule(validation_start, validation_align, "hyst.evaluate");
+        auto score = [&] {
+          py::gil_scoped_release release;
+          return score_on_record(m, u, y, rule);
+        }();
+        const auto figures = [](const PredictionScore& s) {
+          py::dict d;
+          d["rmse"] = s.metrics.rmse;
+          d["nrmse_range_percent"] = s.metrics.nrmse_percent;
+          d["nrmse_std_percent"] = s.nrmse_std_percent;
+          d["max_error"] = s.metrics.max_error;
+          return d;
+        };
+        py::dict out = figures(score.model);
+        out["samples"] = score.model.metrics.samples;
+        out["predicted"] = to_array(std::move(score.predicted));
+        py::dict yardsticks;
+        for (const auto& yardstick : score.yardsticks)
+          yardsticks[py::str(yardstick.name)] = figures(yardstick.score);
+        out["yardsticks_on_this_record"] = yardsticks;
+        return out;
+      },
+      "model"_a, "input"_a, "output"_a, "validation_start"_a = "rest",
+      "validation_align"_a = "none",
+      "A single-input Model scored on a measured record as `hyst evaluate --model m.json --data "
+      "r.csv` and `hyst fit --validation-data` score it: predicted from validation_start "
+      "('rest', 'periodic' or 'file': the model's start state), aligned by validation_align "
+      "('none' or 'first-sample'); a dict with rmse, nrmse_range_percent, nrmse_std_percent, "
+      "max_error, samples, the prediction and yardsticks_on_this_record (its mean and a static "
+      "cubic y(v), fitted on this record).");
   module.def(
       "model_from_dict",
       [](const py::handle& document, std::string_view source) {

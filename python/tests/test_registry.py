@@ -180,6 +180,17 @@ def test_one_validation_rule_on_the_piezo_amplitudes():
     nrmse_percent = 100 * np.sqrt(np.mean((y1 - predicted) ** 2)) / (y1.max() - y1.min())
     assert report.validation.nrmse_percent == pytest.approx(nrmse_percent, rel=1e-12)
     assert report.validation.nrmse_percent == pytest.approx(8.44, abs=0.005)
+    # hyst.evaluate scores the saved model on the record by the same rule, to the last digit.
+    score = hyst.evaluate(model, v1, y1, validation_start="periodic",
+                          validation_align="first-sample")
+    assert score["nrmse_range_percent"] == pytest.approx(report.validation.nrmse_percent,
+                                                          rel=1e-12)
+    np.testing.assert_allclose(score["predicted"], predicted, rtol=1e-12, atol=1e-9)
+    std_percent = 100 * np.sqrt(np.mean((y1 - predicted) ** 2)) / np.std(y1)
+    assert score["nrmse_std_percent"] == pytest.approx(std_percent, rel=1e-9)
+    assert set(score["yardsticks_on_this_record"]) == {"mean", "cubic y(v)"}
+    with pytest.raises(hyst.Error, match="'continue' needs the record the model was fitted to"):
+        hyst.evaluate(model, v1, y1, validation_start="continue")
     # The default is stated too: the model's initial state, the prediction as it is.
     _, default = hyst.fit("pi", v15, y15, v1, y1, operators=10, initial_state="periodic")
     assert "validation start 'rest'" in default.validation_rule

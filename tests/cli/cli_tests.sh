@@ -406,8 +406,13 @@ JSON
     --samples-per-period 64 --periodic --strict
 
   write_pi_model pi.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
-  expect_error 1 "pi.json: model 'pi' is not a dynamic multi-input model (state_space, hysteretic_lfr)" -- \
-    "$HYST" evaluate --model pi.json --data lag.csv --input u --output y
+  # A single-input model is scored on one record; the options of periodic MIMO data are refused.
+  expect_ok "$HYST" evaluate --model pi.json --data lag.csv --input u --output y
+  expect_stdout "(pi, " "128 samples"
+  expect_error 1 "pi.json: --samples-per-period is for dynamic multi-input models" -- \
+    "$HYST" evaluate --model pi.json --data lag.csv --input u --output y --samples-per-period 64
+  expect_error 1 "lag.json: --table, --validation-start and --validation-align are for single-input models" -- \
+    "$HYST" evaluate --model lag.json --data lag.csv --input u --output y --validation-start periodic
   expect_error 1 "1 --input-npy but 0 --output-npy" -- \
     "$HYST" fit-system --input-npy a.npy --sample-time 1 --out x.json
   expect_error 1 "lag.csv --input 'u': 128 samples are not a whole number of periods of 60" -- \
@@ -709,6 +714,27 @@ case_validation_rule() {
   expect_error 2 "--validation-start" "--validation-data" -- \
     "$HYST" fit pi --data "$mat" --input Vplus_15kv --output Displacement_15kv --out x.json \
     --validation-start periodic
+  # The saved model scored on the 1 kV record by `hyst evaluate` under the same rule: the same
+  # figures as the fit's validation line, and the yardsticks fitted on that record.
+  local rule=(--validation-start periodic --validation-align first-sample)
+  expect_ok "${fit[@]}" "${rule[@]}"
+  expect_ok "$HYST" evaluate --model pzt.json --data "$mat" --input Vplus_1kv \
+    --output Displacement_1kv "${rule[@]}"
+  expect_stdout "(pi, 11 parameters)" "401 samples" "periodic steady state" "measured first sample" \
+    "mean (fitted on this record)" "cubic y(v) (fitted on this record)"
+  awk '$1 == "pi" { if ($2 < 66.9 || $2 > 67.0 || $3 < 8.43 || $3 > 8.45) exit 1; seen = 1 }
+       END { exit !seen }' "$WORK/stdout" || fail "evaluate does not give 66.9 / 8.44 %: $(cat "$WORK/stdout")"
+  expect_ok "$HYST" evaluate --model pzt.json --data "$mat" --input Vplus_1kv \
+    --output Displacement_1kv "${rule[@]}" --json
+  expect_stdout '"nrmse_range_percent": 8.44' '"yardsticks_on_this_record"'
+  expect_error 1 "validation start 'continue' needs the record the model was fitted to" -- \
+    "$HYST" evaluate --model pzt.json --data "$mat" --input Vplus_1kv --output Displacement_1kv \
+    --validation-start continue
+  expect_error 1 "pzt.json: --periodic is for dynamic multi-input models" \
+    "--validation-start periodic" -- "$HYST" evaluate --model pzt.json --data "$mat" \
+    --input Vplus_1kv --output Displacement_1kv --periodic
+  expect_error 1 "a single-input model is scored on one record" -- "$HYST" evaluate \
+    --model pzt.json --data "$mat" --input Vplus_1kv
 }
 
 case_invert_saturation() {

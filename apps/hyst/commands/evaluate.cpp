@@ -1,7 +1,9 @@
 // hyst evaluate: the score of a dynamic MIMO model file on periodic test data, as the nonlinear
-// system identification benchmarks define it (hyst/dynamics/simulation_score.hpp).
+// system identification benchmarks define it (hyst/dynamics/simulation_score.hpp), or of any
+// single-input model on a measured record (evaluate_record.hpp).
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -10,6 +12,7 @@
 
 #include "../dynamic_data.hpp"
 #include "commands.hpp"
+#include "evaluate_record.hpp"
 #include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/io/json_text.hpp"
@@ -26,13 +29,17 @@ struct EvaluateOptions {
   std::size_t transient = 0;
   bool json = false;
   bool strict = false;
+  // Single-input models only:
+  std::optional<std::size_t> table;
+  std::string validation_start = "rest";
+  std::string validation_align = "none";
 };
 
 //! The dynamic MIMO models that can be scored here.
 using SystemModel = std::variant<StateSpace, AnyHystereticLfr>;
 
-//! The model of a file; only dynamic MIMO models can be scored here.
-SystemModel load_system_model(const std::string& path) {
+//! The model of a file when it is a dynamic MIMO model, else nothing (a single-input model).
+std::optional<SystemModel> load_system_model(const std::string& path) {
   const auto document = io::parse_json_text(io::read_file(path), path);
   const auto kind =
       document.is_object() && document.contains("model") && document.at("model").is_string()
@@ -40,10 +47,41 @@ SystemModel load_system_model(const std::string& path) {
           : std::string();
   if (kind == "state_space") return state_space_from_json(document, path).model;
   if (kind == "hysteretic_lfr") return hysteretic_lfr_from_json(document, path).model;
-  throw Error(fmt::format(
-      "{}: model '{}' is not a dynamic multi-input model (state_space, hysteretic_lfr); score "
-      "single-input hysteresis models with 'hyst fit --validate' or 'hyst compare'",
-      path, kind));
+  return std::nullopt;
+}
+
+//! A single-input model scored on one record: one --data, --input and --output column each, and
+//! none of the options of periodic MIMO data.
+void run_single_input(const EvaluateOptions& options) {
+  const auto refused = [&](bool given, std::string_view option, std::string_view instead) {
+    if (given)
+      throw Error(
+          fmt::format("{}: {} is for dynamic multi-input models (state_space, "
+                      "hysteretic_lfr); a single-input model is scored on --data with "
+                      "--input and --output{}",
+                      options.model, option, instead));
+  };
+  refused(!options.data.input_npy.empty() || !options.data.output_npy.empty(),
+          "--input-npy/--output-npy", "");
+  refused(options.data.samples_per_period != 0, "--samples-per-period", "");
+  refused(options.periodic, "--periodic",
+          ", from its periodic steady state with "
+          "--validation-start periodic");
+  refused(options.transient != 0, "--transient", "");
+  if (options.data.data.size() != 1 || options.data.input_columns.empty() ||
+      options.data.output_columns.empty())
+    throw Error(
+        fmt::format("{}: a single-input model is scored on one record: give --data FILE "
+                    "--input COLUMN --output COLUMN",
+                    options.model));
+  evaluate_record({.model = options.model,
+                   .data = options.data.data.front(),
+                   .table = options.table,
+                   .input = options.data.input_columns,
+                   .output = options.data.output_columns,
+                   .start = options.validation_start,
+                   .align = options.validation_align,
+                   .json = options.json});
 }
 
 SimulationScore score(const SystemModel& model, const PeriodicExperiment& experiment,
@@ -81,7 +119,15 @@ nlohmann::json score_json(const SimulationScore& score) {
 }
 
 void run(const EvaluateOptions& options) {
-  const auto model = load_system_model(options.model);
+  const auto system = load_system_model(options.model);
+  if (!system) return run_single_input(options);
+  if (options.table || options.validation_start != "rest" || options.validation_align != "none")
+    throw Error(
+        fmt::format("{}: --table, --validation-start and --validation-align are for "
+                    "single-input models; a dynamic model is scored with --periodic or "
+                    "--transient",
+                    options.model));
+  const auto& model = *system;
   const auto experiments = read_experiments(options.data);
   const auto& experiment = experiments.at(0);
   const auto result = score(model, experiment, {options.periodic, options.transient});
@@ -118,9 +164,10 @@ void run(const EvaluateOptions& options) {
 void add_evaluate_command(CLI::App& app) {
   auto options = std::make_shared<EvaluateOptions>();
   auto* command = app.add_subcommand(
-      "evaluate", "Score a dynamic multi-input model on periodic test data (benchmark error).");
-  command->add_option("--model", options->model, "Model file (JSON) of a dynamic model")
-      ->required();
+      "evaluate",
+      "Score a model file on a measured record: any single-input model (the validation rule of "
+      "'hyst fit'), or a dynamic multi-input model on periodic test data (benchmark error).");
+  command->add_option("--model", options->model, "Model file (JSON)")->required();
   add_dynamic_data_options(*command, options->data, false);
   auto* periodic =
       command->add_flag("--periodic", options->periodic,
@@ -130,16 +177,37 @@ void add_evaluate_command(CLI::App& app) {
                    "Without --periodic: samples left out at the start of each realisation")
       ->capture_default_str()
       ->excludes(periodic);
+  command->add_option("--table", options->table,
+                      "Single-input models: the table of a multi-table data file (1-based)");
+  command
+      ->add_option("--validation-start", options->validation_start,
+                   "Single-input models: where the prediction starts: rest (the model's "
+                   "initial state), periodic (the record's own periodic steady state) or file "
+                   "(the state the model file holds)")
+      ->capture_default_str();
+  command
+      ->add_option("--validation-align", options->validation_align,
+                   "Single-input models: none, or first-sample (the prediction shifted to the "
+                   "measured first sample)")
+      ->capture_default_str();
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command->add_flag("--strict", options->strict,
                     "Exit with an error instead of a warning when the model is unstable in free "
                     "run (a pole outside the unit circle, outputs that ran away)");
-  command->footer(R"(Per output channel: RMSE of the simulated output (free run) averaged over
+  command->footer(R"(A single-input model (pi, preisach, ...) is scored on one record exactly as
+'hyst fit --validation-data' scores its validation record (same --validation-start and
+--validation-align, defaults rest and none): RMSE (in the output's unit where the file names
+it), NRMSE by the output's range and by its standard deviation, and the largest error, beside
+yardsticks fitted on this record itself (its mean, a static cubic y(v)): the floor that a model
+without memory reaches there.
+A dynamic multi-input model (state_space, hysteretic_lfr), per output channel: RMSE of the simulated output (free run) averaged over
 realisations and periods, and that RMSE relative to the channel's standard deviation; then their
 mean over the channels. A warning (an error with --strict) says when the free run cannot be
 trusted: a pole of the linear block outside the unit circle, or simulated samples more than 10
 times their channel's measured range beyond it.
-Example:
+Examples:
+  hyst evaluate --model m.json --data v.csv --input Vplus_1kv --output Displacement_1kv \
+      --validation-start periodic --validation-align first-sample
   hyst evaluate --model fsm.json --input-npy u_200mV_test.npy --output-npy y_200mV_test.npy \
       --layout N,channel,realisation,period --periodic)");
   command->callback([options] { run(*options); });

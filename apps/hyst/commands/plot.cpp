@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "hyst/plot/gnuplot.hpp"
 #include "hyst/registry/model_file.hpp"
+#include "hyst/registry/validation_rule.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -24,6 +25,8 @@ struct PlotOptions {
   std::string kind = "series";
   std::string model;
   std::string input;
+  std::string validation_start = "rest";
+  std::string validation_align = "none";
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -76,9 +79,18 @@ void run(const PlotOptions& options) {
       throw Error("--model with --kind series needs --input, the model's input column");
     }
     const auto input = source.column(input_name);
-    std::vector<double> output(input.size());
+    // The prediction that `hyst evaluate` and `hyst fit --validation-data` score, compared with
+    // the first --y column.
+    const auto& measured = figure.series.front().y;
+    if (measured.size() != input.size())
+      throw Error(fmt::format("{}: --input column '{}' has {} samples but --y '{}' has {}",
+                              options.data, input_name, input.size(), options.y.front(),
+                              measured.size()));
+    const auto rule =
+        saved_model_rule(options.validation_start, options.validation_align, "'hyst plot'");
+    std::vector<double> output;
     try {
-      model->simulate(input, output);
+      output = predict_record(*model, input, measured, rule);
     } catch (const Error& error) {
       throw Error(fmt::format("{} column '{}': {}", options.data, input_name, error.what()));
     }
@@ -127,6 +139,16 @@ void add_plot_command(CLI::App& app) {
                       "Model file: add its output, simulated from the --input column");
   command->add_option("--input", options->input,
                       "Input column the model is simulated from (default for loops: --x)");
+  command
+      ->add_option("--validation-start", options->validation_start,
+                   "With --model: where its prediction starts, as for 'hyst evaluate': rest, "
+                   "periodic or file (the state the model file holds)")
+      ->capture_default_str();
+  command
+      ->add_option("--validation-align", options->validation_align,
+                   "With --model: none, or first-sample (shifted to the first --y column's "
+                   "first sample)")
+      ->capture_default_str();
   command->footer(R"(Examples:
   hyst plot --data d.csv --x t --y v,y --out series.png
   hyst plot --data d.csv --x v --y y --kind loop --model m.json --out loop.png

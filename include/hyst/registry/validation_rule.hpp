@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hyst/core/enum_names.hpp"
 #include "hyst/identify/fit_report.hpp"
@@ -66,5 +67,19 @@ ErrorMetrics validate_on_record(const DynamicModel& model, std::span<const doubl
                                 std::span<const double> validation_input,
                                 std::span<const double> validation_output,
                                 const ValidationRule& rule);
+
+//! The rule for a saved model from its names: start "rest", "periodic" or "file" (the state the
+//! model file holds, which predict_record() continues from); "continue" needs the fit record,
+//! which a model file does not carry, and is refused with a message saying so, as is any other
+//! name. `tool` names the command in that message ("'hyst evaluate'").
+ValidationRule saved_model_rule(std::string_view start, std::string_view align,
+                                std::string_view tool);
+
+//! The prediction of a saved model for a record under `rule`, as validate_on_record() scores
+//! it: "continue" goes on from the model's own state (a model file's state is where its fit
+//! ended), "rest" and "periodic" start as above. The model itself is not changed. hyst::Error for
+//! mismatched, empty or non-finite records and a constant output.
+std::vector<double> predict_record(const DynamicModel& model, std::span<const double> input,
+                                   std::span<const double> output, const ValidationRule& rule);
 
 }  // namespace hyst
