@@ -64,6 +64,9 @@ def _metadata():
         f"Version: {_version()}",
         f"Summary: {_description()}",
         "Requires-Python: >=3.9",
+        "License: BSD-3-Clause",
+        "License-File: LICENSE",
+        "Classifier: License :: OSI Approved :: BSD License",
         "",
         "The Python module of hyst, a C++20 toolkit for hysteresis models: fit, invert,",
         "compensate, simulate and control. See README.md of the repository.",
@@ -79,6 +82,7 @@ def _write_dist_info(folder):
     info = Path(folder) / _dist_info()
     info.mkdir(parents=True, exist_ok=True)
     (info / "METADATA").write_text(_metadata())
+    (info / "LICENSE").write_bytes((SOURCE / "LICENSE").read_bytes())
     return info.name
 
 
@@ -130,6 +134,7 @@ def _write_wheel(wheel_directory, files):
     dist_info = _dist_info()
     files = dict(files)
     files[f"{dist_info}/METADATA"] = _metadata().encode()
+    files[f"{dist_info}/LICENSE"] = (SOURCE / "LICENSE").read_bytes()
     files[f"{dist_info}/WHEEL"] = "\n".join([
         "Wheel-Version: 1.0", "Generator: hyst_build", "Root-Is-Purelib: false",
         f"Tag: {_tag()}", ""]).encode()

@@ -11,6 +11,8 @@ trap 'rm -rf "$work"' EXIT
 cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
 config=$(find "$work/prefix" -name hystConfig.cmake | head -n 1)
 test -n "$config" || { echo "no package config installed"; exit 1; }
+grep -q '^BSD 3-Clause License' "$work/prefix/share/doc/hyst/LICENSE" ||
+  { echo "the licence is not installed as share/doc/hyst/LICENSE"; exit 1; }
 
 # Configures and builds consumer project $1 into $work/$1 (its link line in $work/$1.link).
 build_consumer() {

@@ -44,6 +44,11 @@ for line in wheel.read(record).decode().splitlines():
     expected = base64.urlsafe_b64encode(hashlib.sha256(content).digest()).rstrip(b"=").decode()
     assert digest == f"sha256={expected}" and int(size) == len(content), name
 assert sorted(l.split(",")[0] for l in wheel.read(record).decode().splitlines()) == sorted(names)
+# The licence: named in the metadata, its text beside it.
+metadata = wheel.read(next(n for n in names if n.endswith(".dist-info/METADATA"))).decode()
+assert "License: BSD-3-Clause" in metadata.splitlines(), metadata
+licence = wheel.read(next(n for n in names if n.endswith(".dist-info/LICENSE"))).decode()
+assert licence.startswith("BSD 3-Clause License"), licence[:80]
 PY
 
 "$python" -m pip install "$checkout" >"$scratch/install.log" 2>&1 ||
