@@ -10,6 +10,7 @@
 #include "hyst/identify/data_split.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 
 namespace hyst::python {
 namespace {
@@ -63,6 +64,40 @@ void bind_identify(py::module_& module) {
                             : fmt::format("ReferenceScore('{}', not made)", r.name);
       });
 
+  py::class_<FittedDomain>(module, "FittedDomain",
+                           "The domain a model was fitted on (its fit part): input and output "
+                           "ranges, samples, the largest input step, the longest run without a "
+                           "reversal, the sample time when known. check_inputs / check_targets "
+                           "give (inside, message) for another record.")
+      .def_readonly("input_min", &FittedDomain::input_min)
+      .def_readonly("input_max", &FittedDomain::input_max)
+      .def_readonly("output_min", &FittedDomain::output_min)
+      .def_readonly("output_max", &FittedDomain::output_max)
+      .def_readonly("samples", &FittedDomain::samples)
+      .def_readonly("largest_input_step", &FittedDomain::largest_input_step,
+                    "max |v[k] - v[k-1]| [input units per sample]")
+      .def_readonly("longest_hold_samples", &FittedDomain::longest_hold_samples,
+                    "the most consecutive samples without a reversal of the input")
+      .def_readonly("sample_time", &FittedDomain::sample_time, "[s], or None")
+      .def(
+          "check_inputs",
+          [](const FittedDomain& d, const InputArray& input) {
+            const auto values = as_span(input, "input");
+            const auto check = check_inputs(d, values);
+            return py::make_tuple(check.inside(), check.message(values.size()));
+          },
+          "input"_a,
+          "(inside, message): whether every input lies within the fitted input range widened "
+          "by 5 % of its width, and else how many samples do not and where the first is.")
+      .def(
+          "check_targets",
+          [](const FittedDomain& d, const InputArray& targets) {
+            const auto values = as_span(targets, "targets");
+            const auto check = check_targets(d, values);
+            return py::make_tuple(check.inside(), check.message(values.size()));
+          },
+          "targets"_a, "(inside, message) of inverse targets against the fitted output range.");
+
   py::class_<FitReport>(module, "FitReport",
                         "Outcome of a fit. str() gives brief(), full() a table of every field.")
       .def_readonly("model", &FitReport::model)
@@ -91,6 +126,8 @@ void bind_identify(py::module_& module) {
                     "how the record was prepared before fitting, one line per step")
       .def_readonly("validation_rule", &FitReport::validation_rule,
                     "how the validation was predicted, in words (empty: no validation)")
+      .def_readonly("domain", &FitReport::domain,
+                    "FittedDomain of the fit part, or None (a fitter outside hyst.fit)")
       .def("brief", &FitReport::brief, "One paragraph.")
       .def("full", &FitReport::full, "A multi-line table of every field.")
       .def("__str__", &FitReport::brief)

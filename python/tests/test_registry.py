@@ -191,6 +191,16 @@ def test_one_validation_rule_on_the_piezo_amplitudes():
     assert set(score["yardsticks_on_this_record"]) == {"mean", "cubic y(v)"}
     with pytest.raises(hyst.Error, match="'continue' needs the record the model was fitted to"):
         hyst.evaluate(model, v1, y1, validation_start="continue")
+    # The domain of the fit part: the 15 kV record's ranges; the 1 kV input lies inside it, the
+    # 15 kV input scaled by 2 does not.
+    domain = report.domain
+    assert (domain.input_min, domain.input_max) == (v15.min(), v15.max())
+    assert (domain.output_min, domain.output_max) == (y15.min(), y15.max())
+    assert domain.samples == len(v15)
+    assert domain.check_inputs(v1) == (True, "")
+    inside, message = domain.check_inputs(2 * v15)
+    assert not inside and "inputs above the fitted range" in message
+    assert not domain.check_targets(3 * y15)[0]
     # The default is stated too: the model's initial state, the prediction as it is.
     _, default = hyst.fit("pi", v15, y15, v1, y1, operators=10, initial_state="periodic")
     assert "validation start 'rest'" in default.validation_rule

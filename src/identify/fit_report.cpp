@@ -123,6 +123,16 @@ std::string FitReport::full() const {
     line(i == 0 ? "preprocessing" : "", preprocessing[i]);
   }
   if (validation && !validation_rule.empty()) line("validation", validation_rule);
+  if (domain) {
+    line("fitted domain",
+         fmt::format("input [{:.6g}, {:.6g}], output [{:.6g}, {:.6g}], {} samples{}",
+                     domain->input_min, domain->input_max, domain->output_min, domain->output_max,
+                     domain->samples,
+                     domain->sample_time ? fmt::format(" at {:.6g} s", *domain->sample_time)
+                                         : std::string()));
+    line("", fmt::format("largest input step {:.6g}, longest run without a reversal {} samples",
+                         domain->largest_input_step, domain->longest_hold_samples));
+  }
   text += "\n";
   text += fmt::format("  {:<12}{:>10}{:>14}{:>12}{:>14}\n", "part", "samples", "RMSE", "NRMSE [%]",
                       "max error");

@@ -3,6 +3,7 @@
 // the yardstick of reference predictors (identify/reference_predictors.hpp).
 
 #include <exception>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,7 +13,9 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/identify/data_split.hpp"
 #include "hyst/identify/fit_quality.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/identify/reference_predictors.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
@@ -85,6 +88,22 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
   }
 }
 
+// The domain of the samples the model was fitted on: the record without its held-out end, at
+// the sample time of the fit options when they have one.
+FittedDomain domain_of_fit_part(std::span<const double> input, std::span<const double> output,
+                                const FitRequest& request) {
+  std::optional<double> sample_time;
+  if (const auto it = request.options.find("sample_time");
+      it != request.options.end() && it->is_number())
+    sample_time = it->get<double>();
+  if (request.validate_fraction > 0.0 && request.validation_input.empty()) {
+    const auto split = split_by_fraction(input.size(), request.validate_fraction);
+    return fitted_domain(input.subspan(split.fit_begin, split.fit_size()),
+                         output.subspan(split.fit_begin, split.fit_size()), sample_time);
+  }
+  return fitted_domain(input, output, sample_time);
+}
+
 }  // namespace
 
 FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
@@ -136,6 +155,7 @@ FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
                     100.0 * request.validate_fraction);
   }
   judge_fit(outcome, {fit_input, fit_output, validation_input, validation_output}, request);
+  outcome.report.domain = domain_of_fit_part(fit_input, fit_output, request);
   return outcome;
 }
 

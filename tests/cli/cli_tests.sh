@@ -737,6 +737,47 @@ case_validation_rule() {
     --model pzt.json --data "$mat" --input Vplus_1kv
 }
 
+case_fitted_domain() {
+  # A model fitted on inputs within +-1 (a sine) records that domain; a record of amplitude 2
+  # leaves it: one warning line each from simulate, evaluate and invert (--strict: exit 1).
+  awk 'BEGIN { print "v,y"; for (k = 0; k < 400; ++k) { v = sin(2 * 3.14159265358979 * k / 100)
+               printf "%.17g,%.17g\n", v, 0.8 * v + 0.1 * v * v * v } }' > small.csv
+  awk -F, 'NR == 1 { print; next } { printf "%.17g,%.17g\n", 2 * $1, 2 * $2 }' small.csv > large.csv
+  expect_ok "$HYST" fit pi --data small.csv --input v --output y --out m.json --report r.txt
+  grep -q '"domain"' m.json || fail "m.json has no info.domain"
+  grep -q "fitted domain  *input \[-1, 1\]" r.txt || fail "the report has no domain: $(cat r.txt)"
+  expect_ok "$HYST" simulate --model m.json --input small.csv --column v --out y.csv
+  run "$HYST" simulate --model m.json --input large.csv --column v --out y2.csv
+  [ "$STATUS" -eq 0 ] || fail "simulate beyond the domain: exit status $STATUS"
+  [ "$(wc -l <"$WORK/stderr")" -eq 1 ] || fail "expected one warning line: $(cat "$WORK/stderr")"
+  grep -q "^hyst: warning: m.json: large.csv column 'v': outside the domain the model was fitted on: .* samples: inputs below the fitted range \[-1, 1\]" \
+    "$WORK/stderr" || fail "simulate warning: $(cat "$WORK/stderr")"
+  [ -f y2.csv ] || fail "simulate wrote no output beyond the domain"
+  expect_error 1 "inputs above the fitted range [-1, 1]" "(--strict)" -- \
+    "$HYST" simulate --model m.json --input large.csv --column v --out y3.csv --strict
+  run "$HYST" evaluate --model m.json --data large.csv --input v --output y
+  grep -q "^hyst: warning: m.json: large.csv --input 'v': outside the domain" "$WORK/stderr" ||
+    fail "evaluate warning: $(cat "$WORK/stderr")"
+  expect_ok "$HYST" evaluate --model m.json --data small.csv --input v --output y --json
+  expect_stdout '"inside": true'
+  # An inverse asked for outputs beyond every output the fit measured (the issue of a
+  # Jiles-Atherton inverse answering far outside its fitted B): said, not silent.
+  awk -F, 'NR == 1 { print "y"; next } { print $2 }' large.csv > targets.csv
+  run "$HYST" invert --model m.json --target targets.csv --out v.csv
+  grep -q "^hyst: warning: m.json: targets.csv column 'y': outside the domain the model was fitted on: .*targets above the fitted range" \
+    "$WORK/stderr" || fail "invert warning: $(cat "$WORK/stderr")"
+  "$HYST" models jiles_atherton | sed -n '/example model file/,$p' | tail -n +2 > ja.json
+  awk 'BEGIN { print "v"; for (k = 0; k < 600; ++k) printf "%.6g\n", 2 * sin(2 * 3.14159265 * k / 200) }' > h.csv
+  expect_ok "$HYST" simulate --model ja.json --input h.csv --column v --out b.csv
+  expect_ok "$HYST" fit jiles_atherton --data b.csv --input v --output y --out ja_fit.json
+  awk -F, 'NR == 1 { print "y"; next } { print 3 * $2 }' b.csv > b3.csv
+  expect_error 1 "ja_fit.json: b3.csv column 'y': outside the domain" "targets above the fitted range" \
+    "(--strict)" -- "$HYST" invert --model ja_fit.json --target b3.csv --out h3.csv --strict
+  # A model file without a domain (written by hand) is not checked.
+  write_pi_model hand.json "[0]" "[1]" 0
+  expect_ok "$HYST" simulate --model hand.json --input large.csv --column v --out y4.csv
+}
+
 case_invert_saturation() {
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
   # From the virgin state a rising input follows y = sum_j p_j max(v - r_j, 0); with v <= 0.5 the

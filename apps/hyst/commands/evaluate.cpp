@@ -81,7 +81,8 @@ void run_single_input(const EvaluateOptions& options) {
                    .output = options.data.output_columns,
                    .start = options.validation_start,
                    .align = options.validation_align,
-                   .json = options.json});
+                   .json = options.json,
+                   .strict = options.strict});
 }
 
 SimulationScore score(const SystemModel& model, const PeriodicExperiment& experiment,
@@ -193,7 +194,8 @@ void add_evaluate_command(CLI::App& app) {
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command->add_flag("--strict", options->strict,
                     "Exit with an error instead of a warning when the model is unstable in free "
-                    "run (a pole outside the unit circle, outputs that ran away)");
+                    "run (a pole outside the unit circle, outputs that ran away) or, for a "
+                    "single-input model, when the record's inputs leave its fitted domain");
   command->footer(R"(A single-input model (pi, preisach, ...) is scored on one record exactly as
 'hyst fit --validation-data' scores its validation record (same --validation-start and
 --validation-align, defaults rest and none): RMSE (in the output's unit where the file names

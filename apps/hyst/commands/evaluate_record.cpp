@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "../data_source.hpp"
+#include "../domain_warning.hpp"
 #include "commands.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/record_score.hpp"
 
@@ -47,6 +49,10 @@ void evaluate_record(const RecordEvaluation& options) {
                             error.what()));
   }
   const auto unit = source.unit(options.output);
+  const auto domain = load_fitted_domain(options.model);
+  const DomainCheck domain_check = domain ? check_inputs(*domain, record.input) : DomainCheck{};
+  report_domain(domain_check, record.input.size(), options.model,
+                fmt::format("{} --input '{}'", options.data, options.input), options.strict);
 
   if (options.json) {
     nlohmann::json out = prediction_json(score.model);
@@ -59,6 +65,10 @@ void evaluate_record(const RecordEvaluation& options) {
     out["samples"] = score.model.metrics.samples;
     out["validation_start"] = options.start;
     out["validation_align"] = options.align;
+    out["domain"] = domain ? nlohmann::json{{"known", true},
+                                            {"inside", domain_check.inside()},
+                                            {"message", domain_check.message(record.input.size())}}
+                           : nlohmann::json{{"known", false}};
     auto& yardsticks = out["yardsticks_on_this_record"] = nlohmann::json::object();
     for (const auto& yardstick : score.yardsticks)
       yardsticks[yardstick.name] = prediction_json(yardstick.score);

@@ -17,6 +17,7 @@ struct RecordEvaluation {
   std::string start = "rest";        //!< rest, periodic or file
   std::string align = "none";        //!< none or first-sample
   bool json = false;
+  bool strict = false;  //!< inputs beyond the fitted domain are an error, not a warning
 };
 
 //! Scores the model of `options.model` on the record and prints the result (text or JSON).

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -49,6 +50,7 @@ nlohmann::json fit_info_json(const FitReport& report, nlohmann::json data, nlohm
     if (const auto beats = report.beats_yardstick()) info["beats_yardstick"] = *beats;
   }
   if (!report.preprocessing.empty()) info["preprocessing"] = report.preprocessing;
+  if (report.domain) info["domain"] = fitted_domain_json(*report.domain);
   return info;
 }
 

@@ -10,8 +10,10 @@
 #include <fmt/format.h>
 
 #include "../data_source.hpp"
+#include "../domain_warning.hpp"
 #include "commands.hpp"
 #include "hyst/io/csv.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -63,6 +65,9 @@ void run(const InvertOptions& options) {
   }
 
   auto target = source.column(column);
+  // Targets beyond every output the fit measured: checked now, said after the output is written.
+  const auto domain = load_fitted_domain(options.model);
+  const DomainCheck domain_check = domain ? check_targets(*domain, target) : DomainCheck{};
   std::vector<double> input(target.size());
   InverseReport report;
   try {
@@ -79,6 +84,8 @@ void run(const InvertOptions& options) {
   fmt::print(message_stream(is_stdout(options.out)),
              "wrote {}: {} samples of '{}' (target) and '{}' (input)\n", options.out, table.rows(),
              column, options.input_column);
+  report_domain(domain_check, table.rows(), options.model,
+                fmt::format("{} column '{}'", source.path().string(), column), options.strict);
   if (!report.ok()) {
     const std::size_t limited = report.limited_samples;
     std::string message;
@@ -122,7 +129,8 @@ void add_invert_command(CLI::App& app) {
   command->add_option("--input-max", options->input_max,
                       "Highest admissible input (default: none)");
   command->add_flag("--strict", options->strict,
-                    "Exit with status 1 when a target is out of reach (the output is written)");
+                    "Exit with status 1 when a target is out of reach or beyond the outputs the "
+                    "model was fitted on (the output is written)");
   command->footer(R"(Example:
   hyst invert --model m.json --target y.csv --column y --out v.csv --input-min -10 --input-max 10
       v.csv gets the columns y (the target) and v (the input). The inverse starts consistent
@@ -132,7 +140,9 @@ void add_invert_command(CLI::App& app) {
       Duhem, backlash-like, Jiles-Atherton without limits: about 1e12 max(1, |v|) around the
       input they start from); a target the model cannot reach there (e.g. above a saturating
       Bouc-Wen's force bound) gets the input of the nearest reachable output and counts as
-      saturated. With --strict such samples make the exit status 1.)");
+      saturated. Targets more than 5 % of the fitted output range beyond it (the model
+      file's info.domain, written by hyst fit) are extrapolation: one more warning line says
+      how many and where the first is. With --strict such samples make the exit status 1.)");
   command->callback([options] { run(*options); });
 }
 

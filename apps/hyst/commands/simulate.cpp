@@ -7,8 +7,10 @@
 #include <fmt/format.h>
 
 #include "../data_source.hpp"
+#include "../domain_warning.hpp"
 #include "commands.hpp"
 #include "hyst/io/csv.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -20,6 +22,7 @@ struct SimulateOptions {
   std::string column;
   std::string out;
   std::string output_column = "y";
+  bool strict = false;
 };
 
 void run(const SimulateOptions& options) {
@@ -35,6 +38,9 @@ void run(const SimulateOptions& options) {
   }
 
   auto input = source.column(column);
+  // Inputs beyond those the model was fitted on: checked now, said after the output is written.
+  const auto domain = load_fitted_domain(options.model);
+  const DomainCheck domain_check = domain ? check_inputs(*domain, input) : DomainCheck{};
   std::vector<double> output(input.size());
   try {
     model->simulate(input, output);
@@ -51,6 +57,8 @@ void run(const SimulateOptions& options) {
   fmt::print(message_stream(is_stdout(options.out)),
              "wrote {}: {} samples of '{}' (input) and '{}' ({} model from {})\n", options.out,
              table.rows(), column, options.output_column, model->name(), options.model);
+  report_domain(domain_check, table.rows(), options.model,
+                fmt::format("{} column '{}'", source.path().string(), column), options.strict);
 }
 
 }  // namespace
@@ -70,9 +78,15 @@ void add_simulate_command(CLI::App& app) {
       ->required();
   command->add_option("--output-column", options->output_column, "Name of the output column")
       ->capture_default_str();
+  command->add_flag("--strict", options->strict,
+                    "Exit with status 1 when inputs leave the range the model was fitted on "
+                    "(the output is written)");
   command->footer(R"(Example:
   hyst simulate --model m.json --input in.csv --column v --out out.csv
-      out.csv gets the columns v (the input) and y (the model output).)");
+      out.csv gets the columns v (the input) and y (the model output). Inputs more than 5 %
+      of the fitted input range beyond it (the model file's info.domain, written by hyst fit)
+      are extrapolation: a warning line says how many and where the first is (--strict: exit
+      status 1).)");
   command->callback([options] { run(*options); });
 }
 

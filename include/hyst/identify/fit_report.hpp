@@ -28,6 +28,7 @@
 #include "hyst/core/enum_names.hpp"
 #include "hyst/identify/error_metrics.hpp"
 #include "hyst/identify/fit_quality.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/identify/reference_predictors.hpp"
 
 namespace hyst {
@@ -74,6 +75,8 @@ struct FitReport {
   //! (cycles selected, drift removed, resampled; see hyst/data/preprocessing.hpp); empty when it
   //! was used as measured.
   std::vector<std::string> preprocessing;
+  //! The domain of the fit part (fitted_domain.hpp): what other records are checked against.
+  std::optional<FittedDomain> domain;
   //! How `validation` was predicted, in words (registry/validation_rule.hpp); empty when the
   //! fitter alone decided it.
   std::string validation_rule;

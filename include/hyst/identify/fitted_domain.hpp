@@ -1,0 +1,66 @@
+#pragma once
+//! \file
+//! The domain a model was fitted on, and whether another record stays in it. A fitted model
+//! answers for inputs like the ones it saw; beyond them (a larger amplitude, an inverse asked for
+//! an output the fit never measured) it extrapolates, and nothing in its answer says so. The fit
+//! records the domain of its fit part (FitReport::domain, a model file's info.domain), and
+//! `hyst simulate`, `hyst evaluate`, `hyst invert` and Python check every record against it.
+//!
+//! A sample leaves the domain when it lies beyond the fitted range by more than
+//! kDomainMargin of the range's width (input samples for a model, targets for an inverse).
+//! The longest hold (the most consecutive samples without a reversal of the input's direction)
+//! and the largest input step per sample are recorded for reports; a rate or a hold only
+//! compares between records of one sample time, which the check takes from the fit.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace hyst {
+
+//! How far beyond a fitted range a sample may lie before it counts as outside the domain: 5 % of
+//! the range's width (measurement noise and a slightly larger amplitude stay inside).
+inline constexpr double kDomainMargin = 0.05;
+
+struct FittedDomain {
+  double input_min = 0.0;   //!< [input units]
+  double input_max = 0.0;   //!< [input units]
+  double output_min = 0.0;  //!< [output units]
+  double output_max = 0.0;  //!< [output units]
+  std::size_t samples = 0;  //!< of the fit part
+  //! The largest |v[k] - v[k-1]| [input units per sample]; per second with sample_time.
+  double largest_input_step = 0.0;
+  //! The most consecutive samples without a reversal of the input's direction.
+  std::size_t longest_hold_samples = 0;
+  std::optional<double> sample_time;  //!< [s], when the fit knew it
+};
+
+//! The domain of a fit part. hyst::Error for records that differ in length or are empty.
+FittedDomain fitted_domain(std::span<const double> input, std::span<const double> output,
+                           std::optional<double> sample_time = {});
+
+//! Samples of a record that leave one side of the domain, and the first of them (from 0).
+struct DomainExcursion {
+  std::string what;  //!< "inputs beyond the fitted input range [-1, 1]"
+  std::size_t samples = 0;
+  std::size_t first = 0;
+};
+
+//! Every way a record leaves the domain; empty when it stays inside.
+struct DomainCheck {
+  std::vector<DomainExcursion> excursions;
+  bool inside() const { return excursions.empty(); }
+  //! One sentence: "12 of 401 samples: inputs beyond the fitted input range [-1, 1] by more than
+  //! 5 % of its width (first at sample 3); ...", for a warning line.
+  std::string message(std::size_t record_samples) const;
+};
+
+//! The input samples of a record that a model fitted on `domain` extrapolates to.
+DomainCheck check_inputs(const FittedDomain& domain, std::span<const double> input);
+
+//! The targets of an inverse that lie beyond every output the fit measured.
+DomainCheck check_targets(const FittedDomain& domain, std::span<const double> targets);
+
+}  // namespace hyst

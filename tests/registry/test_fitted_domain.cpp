@@ -1,0 +1,100 @@
+// The domain of a fit part by hand, the samples of another record that leave it, and the domain
+// as a model file holds it (info.domain), written by the fit of a model by name.
+
+#include "hyst/identify/fitted_domain.hpp"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/expect_error.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
+#include "hyst/registry/model_file.hpp"
+#include "hyst/registry/model_registry.hpp"
+
+namespace hyst {
+namespace {
+
+TEST(FittedDomain, OfAFitPartByHand) {
+  // Steps +1 +1 -1 0 -1 -1 +4: rising for 3 samples, then falling (the 0 step keeps the
+  // direction) for 5 (indices 2 to 6), then rising again.
+  const std::vector<double> input{0, 1, 2, 1, 1, 0, -1, 3};
+  const std::vector<double> output{5, 6, 7, 6, 6, 5, 4, 9};
+  const auto domain = fitted_domain(input, output, 0.01);
+  EXPECT_EQ(domain.input_min, -1.0);
+  EXPECT_EQ(domain.input_max, 3.0);
+  EXPECT_EQ(domain.output_min, 4.0);
+  EXPECT_EQ(domain.output_max, 9.0);
+  EXPECT_EQ(domain.samples, 8u);
+  EXPECT_EQ(domain.largest_input_step, 4.0);
+  EXPECT_EQ(domain.longest_hold_samples, 5u);
+  EXPECT_EQ(domain.sample_time, 0.01);
+  EXPECT_EQ(fitted_domain(std::vector<double>{2.0}, std::vector<double>{1.0}).longest_hold_samples,
+            1u);
+  EXPECT_HYST_ERROR(fitted_domain(input, std::vector<double>{1.0}), "input");
+}
+
+TEST(FittedDomain, SamplesBeyondFivePercentOfTheWidthLeaveIt) {
+  FittedDomain domain;
+  domain.input_min = -1.0;  // width 4: a margin of 0.2 on each side
+  domain.input_max = 3.0;
+  domain.output_min = 0.0;
+  domain.output_max = 10.0;
+  const std::vector<double> input{3.2, -1.2,  3.3,
+                                  0.0, -1.25, std::numeric_limits<double>::quiet_NaN()};
+  const auto check = check_inputs(domain, input);
+  ASSERT_EQ(check.excursions.size(), 2u);
+  EXPECT_EQ(check.excursions[0].samples, 2u);  // -1.25 and NaN
+  EXPECT_EQ(check.excursions[0].first, 4u);
+  EXPECT_EQ(check.excursions[1].samples, 1u);  // 3.3
+  EXPECT_EQ(check.excursions[1].first, 2u);
+  EXPECT_EQ(check.message(6),
+            "2 of 6 samples: inputs below the fitted range [-1, 3] by more than 5 % of its width "
+            "(first at sample 4); 1 of 6 samples: inputs above the fitted range [-1, 3] by more "
+            "than 5 % of its width (first at sample 2)");
+  EXPECT_TRUE(check_inputs(domain, std::vector<double>{-1.2, 3.2}).inside());
+  // Targets are checked against the outputs: 10.6 is beyond 10 + 0.5.
+  const auto targets = check_targets(domain, std::vector<double>{10.4, 10.6});
+  ASSERT_EQ(targets.excursions.size(), 1u);
+  EXPECT_EQ(targets.excursions[0].first, 1u);
+}
+
+TEST(FittedDomain, RoundTripsThroughAModelFileAndIsRefusedWhenMalformed) {
+  const auto domain = fitted_domain(std::vector<double>{0, 2, 1}, std::vector<double>{1, 3, 2});
+  const nlohmann::json document = {{"info", {{"domain", fitted_domain_json(domain)}}}};
+  const auto back = fitted_domain_of(document, "m.json");
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->input_max, 2.0);
+  EXPECT_EQ(back->longest_hold_samples, 2u);
+  EXPECT_FALSE(back->sample_time.has_value());
+  EXPECT_FALSE(fitted_domain_of({{"info", nlohmann::json::object()}}, "m.json").has_value());
+  EXPECT_HYST_ERROR(fitted_domain_of({{"info", {{"domain", {{"input_min", 1}}}}}}, "m.json"),
+                    "m.json: info.domain.input_max");
+  auto inverted = fitted_domain_json(domain);
+  inverted["input_min"] = 5.0;
+  EXPECT_HYST_ERROR(fitted_domain_of({{"info", {{"domain", inverted}}}}, "m.json"),
+                    "a minimum above its maximum");
+}
+
+TEST(FittedDomain, TheFitOfAModelByNameRecordsItsFitPart) {
+  std::vector<double> input, output;
+  for (int k = 0; k < 200; ++k) {
+    input.push_back(k < 100 ? std::sin(0.1 * k) : 3.0 * std::sin(0.1 * k));
+    output.push_back(0.5 * input.back());
+  }
+  FitRequest request;
+  request.input = input;
+  request.output = output;
+  request.validate_fraction = 0.5;  // the fit part is the first half, of amplitude 1
+  const auto outcome = fit_model(ModelRegistry::builtin().find("pi"), request);
+  ASSERT_TRUE(outcome.report.domain.has_value());
+  EXPECT_EQ(outcome.report.domain->samples, 100u);
+  EXPECT_LE(outcome.report.domain->input_max, 1.0);
+  EXPECT_GT(outcome.report.domain->input_max, 0.99);
+  EXPECT_NE(outcome.report.full().find("fitted domain"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hyst
