@@ -214,6 +214,8 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   files.parameters = code.parameters;
   files.inverse_parameters = code.inverse_parameters;
   files.sample_time = code.sample_time;
+  files.state_check = writer.expand(code.state_check);
+  files.inverse_state_check = writer.expand(code.inverse_state_check);
   const std::string declarations = writer.expand(code.header);
   const std::string definitions = writer.expand(code.source);
   const std::string stamp_name = guard_base + "_EXPORT_STAMP";
@@ -234,6 +236,31 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
       files.source_name, preamble, files.header_name, stamp_name, stamp_name, stamp,
       files.header_name, files.source_name, definitions);
   return files;
+}
+
+std::string c_inverse_target_functions(const CWriter& writer) {
+  // Far beyond any output a fitted model reaches, yet so small that a sum of products of it with
+  // weights below 1e150 (double) or 1e18 (float) stays finite.
+  return CWriter::fill(
+      R"(/* Targets beyond +-@_TARGET_LIMIT (and +-inf) are taken as +-@_TARGET_LIMIT: they give the
+   extreme input in their direction, never inf - inf = NaN inside the inverse's sums. */
+#define @_TARGET_LIMIT %LIMIT%
+static @_real @_bounded_target(@_real target) {
+  if (target > @_TARGET_LIMIT) return @_TARGET_LIMIT;
+  if (target < -@_TARGET_LIMIT) return -@_TARGET_LIMIT;
+  return target;
+}
+
+/* The inverse's input limits (the library's below_range / above_range answers), written so that
+   NaN cannot pass: it gives input_min. */
+static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
+  if (!(input >= input_min)) return input_min;
+  if (input > input_max) return input_max;
+  return input;
+}
+
+)",
+      {{"LIMIT", writer.single() ? "1e18f" : "1e150"}});
 }
 
 std::string_view c_dead_zone_function() {
@@ -259,13 +286,15 @@ static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_re
   ;
 }
 
-CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description) {
-  return {std::move(name), {value}, false, unit, std::move(description)};
+CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description,
+                         CRule rule) {
+  return {std::move(name), {value}, false, unit, std::move(description), rule};
 }
 
 CParameterField c_array(std::string name, std::span<const double> values, CUnit unit,
-                        std::string description) {
-  return {std::move(name), {values.begin(), values.end()}, true, unit, std::move(description)};
+                        std::string description, CRule rule) {
+  return {
+      std::move(name), {values.begin(), values.end()}, true, unit, std::move(description), rule};
 }
 
 std::string c_output_limits(const CWriter& writer, double output_min, double output_max) {
