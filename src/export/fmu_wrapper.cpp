@@ -165,6 +165,58 @@ static fmu_instance *fmu_unregister(fmi2Component c) {
   return found;
 }
 
+/* A saved state as the host holds it: the snapshot, and its link in the registry of live states
+   (a state may be restored into another instance, so the registry is the library's, like the
+   instances'). A state pointer is looked up there before it is read: a freed, foreign or
+   uninitialised pointer is refused, and freeing a state twice is harmless. */
+typedef struct fmu_saved_s {
+  struct fmu_saved_s *next;
+  fmi2CallbackFreeMemory release;
+  fmu_snapshot snapshot;
+} fmu_saved;
+
+static fmu_saved *fmu_saved_registry = NULL;
+
+static fmu_saved *fmu_saved_live(fmi2FMUstate state) {
+  fmu_saved *found = NULL;
+  fmu_saved *p;
+  if (state == NULL) return NULL;
+  fmu_lock();
+  for (p = fmu_saved_registry; p != NULL && found == NULL; p = p->next)
+    if ((void *)p == state) found = p;
+  fmu_unlock();
+  return found;
+}
+
+static fmu_saved *fmu_saved_new(fmu_instance *fmu) {
+  fmu_saved *saved = (fmu_saved *)fmu->allocate(1, sizeof(fmu_saved));
+  if (saved == NULL) return NULL;
+  saved->release = fmu->release;
+  fmu_lock();
+  saved->next = fmu_saved_registry;
+  fmu_saved_registry = saved;
+  fmu_unlock();
+  return saved;
+}
+
+/* Removes `state` from the registry and frees it; 0 when it was not live. */
+static int fmu_saved_free(fmi2FMUstate state) {
+  fmu_saved *found = NULL;
+  fmu_saved **link;
+  fmu_lock();
+  for (link = &fmu_saved_registry; *link != NULL; link = &(*link)->next) {
+    if ((void *)*link == state) {
+      found = *link;
+      *link = found->next;
+      break;
+    }
+  }
+  fmu_unlock();
+  if (found == NULL) return 0;
+  found->release(found);
+  return 1;
+}
+
 static fmi2Status fmu_error(fmu_instance *fmu, const char *message) {
   if (fmu->logger != NULL)
     fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "%s", message);
@@ -540,46 +592,54 @@ FMU_EXPORT fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr
 
 /* The saved state: the instance's snapshot with its parameters, sealed by its checksum. */
 FMU_EXPORT fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
-  fmu_snapshot *saved;
+  fmu_saved *saved;
   FMU_INSTANCE(fmu, c);
   if (FMUstate == NULL) return fmu_error(fmu, "fmi2GetFMUstate: FMUstate is NULL");
-  saved = (fmu_snapshot *)*FMUstate;
-  if (saved != NULL && saved->magic != FMU_STATE_MAGIC)
-    return fmu_error(fmu, "fmi2GetFMUstate: *FMUstate is not a state of this FMU");
-  if (saved == NULL) {
-    saved = (fmu_snapshot *)fmu->allocate(1, sizeof(fmu_snapshot));
-    if (saved == NULL) return fmu_error(fmu, "fmi2GetFMUstate: out of memory");
-  }
-  memcpy(saved, &fmu->now, sizeof(fmu_snapshot));
-  fmu_parameter_values(fmu, saved->parameters);
-  saved->checksum = fmu_checksum(saved);
+  saved = fmu_saved_live(*FMUstate);
+  if (*FMUstate != NULL && saved == NULL)
+    return fmu_error(fmu, "fmi2GetFMUstate: *FMUstate is neither NULL nor a live state of this "
+                          "FMU");
+  if (saved == NULL) saved = fmu_saved_new(fmu);
+  if (saved == NULL) return fmu_error(fmu, "fmi2GetFMUstate: out of memory");
+  memcpy(&saved->snapshot, &fmu->now, sizeof(fmu_snapshot));
+  fmu_parameter_values(fmu, saved->snapshot.parameters);
+  saved->snapshot.checksum = fmu_checksum(&saved->snapshot);
   *FMUstate = saved;
   return fmi2OK;
 }
 
+/* Logs `problem` of a state for `function`; fmi2Error. */
+static fmi2Status fmu_refuse_state(fmu_instance *fmu, const char *function, const char *problem) {
+  if (fmu->logger != NULL)
+    fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "%s: %s", function,
+                problem);
+  return fmi2Error;
+}
+
 FMU_EXPORT fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-  const fmu_snapshot *saved = (const fmu_snapshot *)FMUstate;
+  const fmu_saved *saved;
   const char *problem;
   size_t k;
   FMU_INSTANCE(fmu, c);
-  if (saved == NULL) return fmu_error(fmu, "fmi2SetFMUstate: FMUstate is NULL");
-  problem = fmu_snapshot_problem(saved);
-  if (problem != NULL) {
-    if (fmu->logger != NULL)
-      fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "fmi2SetFMUstate: %s",
-                  problem);
+  saved = fmu_saved_live(FMUstate);
+  if (saved == NULL)
+    return fmu_error(fmu, "fmi2SetFMUstate: FMUstate is not a live state of this FMU");
+  problem = fmu_snapshot_problem(&saved->snapshot);
+  if (problem != NULL) return fmu_refuse_state(fmu, "fmi2SetFMUstate", problem);
+  if (!fmu_parameters_valid(fmu, "fmi2SetFMUstate", fmu_value_of_array,
+                            saved->snapshot.parameters))
     return fmi2Error;
-  }
-  if (!fmu_parameters_valid(fmu, "fmi2SetFMUstate", fmu_value_of_array, saved->parameters)) return fmi2Error;
-  memcpy(&fmu->now, saved, sizeof(fmu_snapshot));
-  for (k = 0; k < FMU_PARAMETERS; ++k) *fmu_parameter(&fmu->params, k) = (@_real)saved->parameters[k];
+  memcpy(&fmu->now, &saved->snapshot, sizeof(fmu_snapshot));
+  for (k = 0; k < FMU_PARAMETERS; ++k)
+    *fmu_parameter(&fmu->params, k) = (@_real)saved->snapshot.parameters[k];
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
   FMU_INSTANCE(fmu, c);
   if (FMUstate == NULL || *FMUstate == NULL) return fmi2OK;
-  fmu->release(*FMUstate);
+  if (!fmu_saved_free(*FMUstate))
+    return fmu_error(fmu, "fmi2FreeFMUstate: not a live state of this FMU (freed before?)");
   *FMUstate = NULL;
   return fmi2OK;
 }
@@ -587,21 +647,26 @@ FMU_EXPORT fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) 
 FMU_EXPORT fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate,
                                                  size_t *size) {
   FMU_INSTANCE(fmu, c);
-  if (FMUstate == NULL || size == NULL)
-    return fmu_error(fmu, "fmi2SerializedFMUstateSize: FMUstate or size is NULL");
+  if (size == NULL) return fmu_error(fmu, "fmi2SerializedFMUstateSize: size is NULL");
+  if (fmu_saved_live(FMUstate) == NULL)
+    return fmu_error(fmu, "fmi2SerializedFMUstateSize: FMUstate is not a live state of this FMU");
   *size = sizeof(fmu_snapshot);
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
                                             fmi2Byte serializedState[], size_t size) {
+  const fmu_saved *saved;
   const char *problem;
   FMU_INSTANCE(fmu, c);
-  if (FMUstate == NULL || serializedState == NULL || size < sizeof(fmu_snapshot))
-    return fmu_error(fmu, "fmi2SerializeFMUstate: no state, no buffer, or a buffer too small");
-  problem = fmu_snapshot_problem((const fmu_snapshot *)FMUstate);
-  if (problem != NULL) return fmu_error(fmu, "fmi2SerializeFMUstate: the state is not valid");
-  memcpy(serializedState, FMUstate, sizeof(fmu_snapshot));
+  saved = fmu_saved_live(FMUstate);
+  if (saved == NULL)
+    return fmu_error(fmu, "fmi2SerializeFMUstate: FMUstate is not a live state of this FMU");
+  if (serializedState == NULL || size < sizeof(fmu_snapshot))
+    return fmu_error(fmu, "fmi2SerializeFMUstate: no buffer, or a buffer too small");
+  problem = fmu_snapshot_problem(&saved->snapshot);
+  if (problem != NULL) return fmu_refuse_state(fmu, "fmi2SerializeFMUstate", problem);
+  memcpy(serializedState, &saved->snapshot, sizeof(fmu_snapshot));
   return fmi2OK;
 }
 
@@ -609,34 +674,32 @@ FMU_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUsta
    values, the memory's bounds, the parameters' rules) before the host gets it. */
 FMU_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
                                               size_t size, fmi2FMUstate *FMUstate) {
-  fmu_snapshot *saved;
-  fmu_snapshot *fresh = NULL;
+  fmu_saved *saved;
+  fmu_saved *fresh;
   const char *problem;
   FMU_INSTANCE(fmu, c);
   if (serializedState == NULL || FMUstate == NULL)
     return fmu_error(fmu, "fmi2DeSerializeFMUstate: serializedState or FMUstate is NULL");
   if (size != sizeof(fmu_snapshot))
     return fmu_error(fmu, "fmi2DeSerializeFMUstate: the size is not that of this FMU's state");
-  saved = (fmu_snapshot *)*FMUstate;
-  if (saved != NULL && saved->magic != FMU_STATE_MAGIC)
-    return fmu_error(fmu, "fmi2DeSerializeFMUstate: *FMUstate is not a state of this FMU");
-  fresh = (fmu_snapshot *)fmu->allocate(1, sizeof(fmu_snapshot));
+  saved = fmu_saved_live(*FMUstate);
+  if (*FMUstate != NULL && saved == NULL)
+    return fmu_error(fmu, "fmi2DeSerializeFMUstate: *FMUstate is neither NULL nor a live state "
+                          "of this FMU");
+  fresh = fmu_saved_new(fmu);
   if (fresh == NULL) return fmu_error(fmu, "fmi2DeSerializeFMUstate: out of memory");
-  memcpy(fresh, serializedState, sizeof(fmu_snapshot));
-  problem = fmu_snapshot_problem(fresh);
+  memcpy(&fresh->snapshot, serializedState, sizeof(fmu_snapshot));
+  problem = fmu_snapshot_problem(&fresh->snapshot);
   if (problem == NULL && !fmu_parameters_valid(fmu, "fmi2DeSerializeFMUstate", fmu_value_of_array,
-                                               fresh->parameters))
+                                               fresh->snapshot.parameters))
     problem = "the state's parameters break the model's rules";
   if (problem != NULL) {
-    fmu->release(fresh);
-    if (fmu->logger != NULL)
-      fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError",
-                  "fmi2DeSerializeFMUstate: %s", problem);
-    return fmi2Error;
+    fmu_saved_free(fresh);
+    return fmu_refuse_state(fmu, "fmi2DeSerializeFMUstate", problem);
   }
   if (saved != NULL) {
-    memcpy(saved, fresh, sizeof(fmu_snapshot));
-    fmu->release(fresh);
+    memcpy(&saved->snapshot, &fresh->snapshot, sizeof(fmu_snapshot));
+    fmu_saved_free(fresh);
   } else {
     *FMUstate = fresh;
   }

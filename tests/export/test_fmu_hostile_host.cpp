@@ -261,6 +261,40 @@ TEST_F(FmuHostileHostTest, FreeingTwiceIsHarmlessAndTheFreedInstanceIsRefused) {
   EXPECT_EQ(outcome.status, fmi2::Error) << describe(outcome);
 }
 
+TEST_F(FmuHostileHostTest, StatePointersThatAreNotLiveStatesAreRefused) {
+  export_pi(true);
+  double not_a_state[64] = {};
+  expect_refused(*fmu_, "fmi2FreeFMUstate twice (a copy of the pointer)",
+                 [&](const auto& f, auto c) {
+                   fmi2::FMUstate state = nullptr;
+                   f.get_fmu_state(c, &state);
+                   fmi2::FMUstate copy = state;
+                   f.free_fmu_state(c, &state);
+                   return f.free_fmu_state(c, &copy);
+                 });
+  expect_refused(*fmu_, "fmi2SetFMUstate(a freed state)", [&](const auto& f, auto c) {
+    fmi2::FMUstate state = nullptr;
+    f.get_fmu_state(c, &state);
+    fmi2::FMUstate copy = state;
+    f.free_fmu_state(c, &state);
+    return f.set_fmu_state(c, copy);
+  });
+  expect_refused(*fmu_, "fmi2SetFMUstate(foreign memory)",
+                 [&](const auto& f, auto c) { return f.set_fmu_state(c, not_a_state); });
+  expect_refused(*fmu_, "fmi2GetFMUstate(*FMUstate foreign)", [&](const auto& f, auto c) {
+    fmi2::FMUstate state = not_a_state;  // an uninitialised variable of the host, say
+    return f.get_fmu_state(c, &state);
+  });
+  expect_refused(*fmu_, "fmi2SerializeFMUstate(foreign memory)", [&](const auto& f, auto c) {
+    char bytes[4096];
+    return f.serialize_fmu_state(c, not_a_state, bytes, sizeof bytes);
+  });
+  expect_refused(*fmu_, "fmi2SerializedFMUstateSize(foreign memory)", [&](const auto& f, auto c) {
+    std::size_t size = 0;
+    return f.serialized_fmu_state_size(c, not_a_state, &size);
+  });
+}
+
 TEST_F(FmuHostileHostTest, ParametersTheLibraryRefusesAreRefusedByName) {
   export_pi(true);
   // Each is refused at fmi2ExitInitializationMode with the parameter's name in the log, and the
@@ -327,7 +361,8 @@ TEST_F(FmuHostileHostTest, StatesWrittenByTheHostOrForgedAreRefused) {
   FmuInstance instance(*fmu_);
   const auto& f = fmu_->functions();
   const auto bytes = serialised_state(*fmu_, instance);
-  // A value written into a state the FMU handed out: its checksum no longer matches.
+  // A value written into the memory of a state the FMU handed out: its checksum no longer
+  // matches.
   for (const double value : {std::nan(""), -1e300}) {
     fmi2::FMUstate state = nullptr;
     ASSERT_EQ(f.get_fmu_state(instance.component(), &state), fmi2::OK);
