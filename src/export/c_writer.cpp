@@ -178,7 +178,10 @@ extern const @_inverse_params @_INVERSE_PARAMS;
 void @_inverse_init(@_inverse_state *state);
 /* Inverse in the state consistent with the model's default initial state. */
 void @_inverse_reset(@_inverse_state *state);
-/* The input that makes the model produce `target`%STEP%; advances the inverse's state. */
+/* The input that makes the model produce `target`%STEP%; advances the inverse's state.
+   A target out of reach, +-inf included, gives the extreme input in its direction (the input
+   limit, or without one a finite input far out); a NaN target returns the last input again and
+   leaves the inverse's state as it was (a model with lags steps them on). Never NaN. */
 @_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
 )",
                        {{"STEP", std::string(step_note)}});

@@ -342,6 +342,78 @@ TEST_F(ExportCTest, BoucWenRk4AndExactSolution) {
   check_everything({exact, -3.0, 3.0}, kFloatBound);
 }
 
+// Every exported inverse, in double and float, with and without input limits: +-inf and +-1e308
+// give the limits (a finite input without them), never NaN; a NaN target holds the last input.
+class ExportCInverseTest : public ExportCTest, public testing::WithParamInterface<std::string> {};
+
+TEST_P(ExportCInverseTest, NonFiniteTargetsGiveTheLimitsOrTheHeldInput) {
+  const std::string driver = R"(#include <math.h>
+#include <stdio.h>
+#include "odd.h"
+int main(void) {
+  const double targets[] = {0.1, 1e308, 0.2, HUGE_VAL, 0.1, -HUGE_VAL, 0.15, -1e308, 0.05, NAN};
+  odd_inverse_state state;
+  unsigned int k;
+  odd_inverse_init(&state);
+  for (k = 0; k < sizeof targets / sizeof targets[0]; ++k)
+    printf("%.17g\n", (double)odd_inverse_step(&odd_INVERSE_PARAMS, &state, (odd_real)targets[k]));
+  return 0;
+}
+)";
+  const std::string name = GetParam();
+  const auto model = model_from_json(example_document(name), "test.json");
+  for (const CScalar scalar : {CScalar::double_precision, CScalar::single_precision}) {
+    for (const bool limited : {true, false}) {
+      CExportOptions options;
+      options.prefix = "odd";
+      options.scalar = scalar;
+      if (limited) options.limits = {-0.5, 0.5};
+      const CCode code = export_c(*model, dir_, options);
+      ASSERT_TRUE(code.has_inverse) << name;
+      std::ofstream(dir_ / "odd_driver.c") << driver;
+      std::string log;
+      ASSERT_EQ(test::run_command(fmt::format("cd '{}' && gcc -std=c99 -Wall -Wextra -Werror "
+                                              "-pedantic -o odd odd_driver.c odd.c -lm 2>&1",
+                                              dir_.string()),
+                                  &log),
+                0)
+          << log;
+      std::string printed;
+      ASSERT_EQ(test::run_command(fmt::format("cd '{}' && ./odd", dir_.string()), &printed), 0);
+      const auto inputs = numbers_in(printed);
+      const std::string what =
+          fmt::format("{} ({}, {})", name, scalar == CScalar::single_precision ? "float" : "double",
+                      limited ? "limits [-0.5, 0.5]" : "no limits");
+      ASSERT_EQ(inputs.size(), 10U) << what;
+      for (std::size_t k = 0; k < inputs.size(); ++k)
+        EXPECT_TRUE(std::isfinite(inputs[k])) << what << ": target " << k << " gave " << inputs[k];
+      if (limited) {
+        EXPECT_EQ(inputs[1], 0.5) << what << ": 1e308";
+        EXPECT_EQ(inputs[3], 0.5) << what << ": +inf";
+        EXPECT_EQ(inputs[5], -0.5) << what << ": -inf";
+        EXPECT_EQ(inputs[7], -0.5) << what << ": -1e308";
+      }
+      EXPECT_EQ(inputs[9], inputs[8]) << what << ": NaN holds the last input";
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryModelWithAnInverse, ExportCInverseTest,
+                         testing::Values("pi", "modified_pi", "gpi", "preisach", "pi_creep",
+                                         "modified_pi_creep"));
+
+// The list above is every exported model with an inverse.
+TEST_F(ExportCTest, EveryExportedInverseIsCheckedWithNonFiniteTargets) {
+  std::set<std::string> with_inverse;
+  for (const auto& entry : ModelRegistry::builtin().entries()) {
+    if (entry.can_export_c() &&
+        generate_c(*model_from_json(example_document(entry.name), "test.json"), {}).has_inverse)
+      with_inverse.insert(entry.name);
+  }
+  EXPECT_EQ(with_inverse, (std::set<std::string>{"pi", "modified_pi", "gpi", "preisach", "pi_creep",
+                                                 "modified_pi_creep"}));
+}
+
 TEST_F(ExportCTest, NmListsTheMathFunctionsTheCodeCalls) {
   // The symbol check of check_everything() reads nm's listing: it does see the calls there are.
   const Case c{example_document("gpi")};
