@@ -103,8 +103,13 @@ typedef struct {
   fmi2Real parameters[FMU_PARAMETERS + 1u];
 } fmu_snapshot;
 
-typedef struct fmu_instance_s {
-  struct fmu_instance_s *next; /* the registry of live instances */
+/* A member of a registry of live objects: the first field of an instance and of a saved state. */
+typedef struct fmu_link_s {
+  struct fmu_link_s *next;
+} fmu_link;
+
+typedef struct {
+  fmu_link link; /* in the registry of live instances */
   fmi2CallbackLogger logger;
   fmi2CallbackAllocateMemory allocate;
   fmi2CallbackFreeMemory release;
@@ -114,11 +119,14 @@ typedef struct fmu_instance_s {
   fmu_snapshot now;
 } fmu_instance;
 
-/* The live instances of this library. A function looks its component up here before it reads
-   it, so that NULL, a pointer freed by fmi2FreeInstance (a second free) or any other pointer is
-   refused without being read. The list is guarded by a spin lock: instances may live on several
-   threads (the FMI allows calls for different instances at the same time). */
-static fmu_instance *fmu_registry = NULL;
+/* The live instances and the live saved states of this library. A function looks its component
+   (and a state) up here before it reads it, so that NULL, a pointer freed before (a second free),
+   an uninitialised or any other pointer is refused without being read. A state has a registry of
+   the library's, not of its instance: it may be restored into another instance. The lists are
+   guarded by a spin lock: instances may live on several threads (the FMI allows calls for
+   different instances at the same time). */
+static fmu_link *fmu_instances = NULL;
+static fmu_link *fmu_states = NULL;
 #if defined(__GNUC__)
 static char fmu_registry_busy = 0;
 static void fmu_lock(void) {
@@ -131,33 +139,34 @@ static void fmu_lock(void) {}
 static void fmu_unlock(void) {}
 #endif
 
-static fmu_instance *fmu_live(fmi2Component c) {
-  fmu_instance *found = NULL;
-  fmu_instance *p;
-  if (c == NULL) return NULL;
+/* The member of `list` at `p`, or NULL. */
+static fmu_link *fmu_find(fmu_link *const *list, const void *p) {
+  fmu_link *found = NULL;
+  fmu_link *member;
+  if (p == NULL) return NULL;
   fmu_lock();
-  for (p = fmu_registry; p != NULL && found == NULL; p = p->next)
-    if ((void *)p == c) found = p;
+  for (member = *list; member != NULL && found == NULL; member = member->next)
+    if ((const void *)member == p) found = member;
   fmu_unlock();
   return found;
 }
 
-static void fmu_register(fmu_instance *fmu) {
+static void fmu_add(fmu_link **list, fmu_link *member) {
   fmu_lock();
-  fmu->next = fmu_registry;
-  fmu_registry = fmu;
+  member->next = *list;
+  *list = member;
   fmu_unlock();
 }
 
-/* Removes `c` from the registry; returns it, or NULL when it was not live. */
-static fmu_instance *fmu_unregister(fmi2Component c) {
-  fmu_instance *found = NULL;
-  fmu_instance **link;
+/* Takes the member at `p` out of `list`; returns it, or NULL when it was not there. */
+static fmu_link *fmu_remove(fmu_link **list, const void *p) {
+  fmu_link *found = NULL;
+  fmu_link **at;
   fmu_lock();
-  for (link = &fmu_registry; *link != NULL; link = &(*link)->next) {
-    if ((void *)*link == c) {
-      found = *link;
-      *link = found->next;
+  for (at = list; *at != NULL; at = &(*at)->next) {
+    if ((const void *)*at == p) {
+      found = *at;
+      *at = found->next;
       break;
     }
   }
@@ -165,53 +174,33 @@ static fmu_instance *fmu_unregister(fmi2Component c) {
   return found;
 }
 
-/* A saved state as the host holds it: the snapshot, and its link in the registry of live states
-   (a state may be restored into another instance, so the registry is the library's, like the
-   instances'). A state pointer is looked up there before it is read: a freed, foreign or
-   uninitialised pointer is refused, and freeing a state twice is harmless. */
-typedef struct fmu_saved_s {
-  struct fmu_saved_s *next;
+static fmu_instance *fmu_live(fmi2Component c) {
+  return (fmu_instance *)fmu_find(&fmu_instances, c);
+}
+
+/* A saved state as the host holds it: the snapshot, with the free function of the instance that
+   allocated it (a state may outlive its instance). */
+typedef struct {
+  fmu_link link; /* in the registry of live states */
   fmi2CallbackFreeMemory release;
   fmu_snapshot snapshot;
 } fmu_saved;
 
-static fmu_saved *fmu_saved_registry = NULL;
-
 static fmu_saved *fmu_saved_live(fmi2FMUstate state) {
-  fmu_saved *found = NULL;
-  fmu_saved *p;
-  if (state == NULL) return NULL;
-  fmu_lock();
-  for (p = fmu_saved_registry; p != NULL && found == NULL; p = p->next)
-    if ((void *)p == state) found = p;
-  fmu_unlock();
-  return found;
+  return (fmu_saved *)fmu_find(&fmu_states, state);
 }
 
 static fmu_saved *fmu_saved_new(fmu_instance *fmu) {
   fmu_saved *saved = (fmu_saved *)fmu->allocate(1, sizeof(fmu_saved));
   if (saved == NULL) return NULL;
   saved->release = fmu->release;
-  fmu_lock();
-  saved->next = fmu_saved_registry;
-  fmu_saved_registry = saved;
-  fmu_unlock();
+  fmu_add(&fmu_states, &saved->link);
   return saved;
 }
 
-/* Removes `state` from the registry and frees it; 0 when it was not live. */
+/* Frees a live state; 0 when `state` is not one. */
 static int fmu_saved_free(fmi2FMUstate state) {
-  fmu_saved *found = NULL;
-  fmu_saved **link;
-  fmu_lock();
-  for (link = &fmu_saved_registry; *link != NULL; link = &(*link)->next) {
-    if ((void *)*link == state) {
-      found = *link;
-      *link = found->next;
-      break;
-    }
-  }
-  fmu_unlock();
+  fmu_saved *found = (fmu_saved *)fmu_remove(&fmu_states, state);
   if (found == NULL) return 0;
   found->release(found);
   return 1;
@@ -426,14 +415,14 @@ FMU_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuTy
   fmu->release = functions->freeMemory;
   fmu->environment = functions->componentEnvironment;
   fmu_start(fmu);
-  fmu_register(fmu);
+  fmu_add(&fmu_instances, &fmu->link);
   return fmu;
 }
 
 /* A component that is not live (NULL, freed before, foreign) is left alone: freeing twice is
    harmless. */
 FMU_EXPORT void fmi2FreeInstance(fmi2Component c) {
-  fmu_instance *fmu = fmu_unregister(c);
+  fmu_instance *fmu = (fmu_instance *)fmu_remove(&fmu_instances, c);
   if (fmu == NULL) return;
   fmu->release(fmu->name);
   fmu->release(fmu);
