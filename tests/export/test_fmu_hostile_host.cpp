@@ -23,6 +23,7 @@
 #include "../support/fmu_host.hpp"
 #include "../support/temp_folder_test.hpp"
 #include "hyst/export/export_fmu.hpp"
+#include "hyst/models/preisach_state.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -96,7 +97,8 @@ constexpr std::size_t kChecksumAt = 8;
 constexpr std::size_t kInputAt = 24;
 constexpr std::size_t kFirstStateValueAt = 48;
 
-void forge(std::vector<char>& bytes, std::size_t at, double value) {
+template <class T>
+void forge(std::vector<char>& bytes, std::size_t at, T value) {
   std::memcpy(bytes.data() + at, &value, sizeof value);
   const std::uint64_t checksum = fnv1a(bytes.data() + kChecksumAt + 8, bytes.data() + bytes.size());
   std::memcpy(bytes.data() + kChecksumAt, &checksum, sizeof checksum);
@@ -392,6 +394,48 @@ TEST_F(FmuHostileHostTest, StatesWrittenByTheHostOrForgedAreRefused) {
     ASSERT_EQ(f.set_fmu_state(instance.component(), state), fmi2::OK);
     EXPECT_TRUE(std::isfinite(instance.get(kOutput)));
     f.free_fmu_state(instance.component(), &state);
+  }
+}
+
+// A forged Preisach memory whose size lies outside its capacity would make the step read past
+// the state: it is refused, in a child so that a crash would be seen as one.
+TEST_F(FmuHostileHostTest, APreisachMemoryOutOfItsBoundsIsRefused) {
+  const auto& entry = ModelRegistry::builtin().find("preisach");
+  const auto model = model_from_json(
+      {{"model", "preisach"}, {"version", 1}, {"params", entry.example_params}}, "test.json");
+  FmuExportOptions options;
+  options.code.prefix = "memory";
+  const auto files = export_fmu(*model, dir_ / "out", options);
+  const Fmu fmu(files.model, dir_ / "memory");
+  // The state after the snapshot's header: extrema[capacity], partial[capacity], then the size.
+  const std::size_t capacity = 2 * PreisachState::max_pairs + 1;
+  const std::size_t size_at = kFirstStateValueAt + 2 * capacity * sizeof(double);
+  // The forgery itself is right: a size within the bounds (the memory cut to x_0) is taken.
+  {
+    FmuInstance instance(fmu);
+    auto bytes = serialised_state(fmu, instance);
+    forge(bytes, size_at, 1U);
+    fmi2::FMUstate state = nullptr;
+    EXPECT_EQ(fmu.functions().deserialize_fmu_state(instance.component(), bytes.data(),
+                                                    bytes.size(), &state),
+              fmi2::OK)
+        << instance.log();
+    fmu.functions().free_fmu_state(instance.component(), &state);
+  }
+  for (const unsigned size : {0U, static_cast<unsigned>(capacity) + 1U, 0x7fffffffU}) {
+    const Outcome outcome = in_child([&](bool& logged) {
+      FmuInstance instance(fmu);
+      auto bytes = serialised_state(fmu, instance);
+      forge(bytes, size_at, size);
+      fmi2::FMUstate state = nullptr;
+      const int status = fmu.functions().deserialize_fmu_state(instance.component(), bytes.data(),
+                                                               bytes.size(), &state);
+      logged = instance.log().find("out of its bounds") != std::string::npos;
+      return status;
+    });
+    EXPECT_EQ(outcome.signal, 0) << "size " << size << ": " << describe(outcome);
+    EXPECT_EQ(outcome.status, fmi2::Error) << "size " << size << ": " << describe(outcome);
+    EXPECT_TRUE(outcome.logged) << "size " << size << ": " << describe(outcome);
   }
 }
 
