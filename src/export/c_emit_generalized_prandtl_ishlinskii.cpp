@@ -222,8 +222,8 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
           : fmt::format("#define @_SATURATION {}\n\n",
                         writer.number(saturation_limit(params.envelope, writer.single())));
   code.source =
-      saturation + std::string(c_play_functions()) + c_inverse_target_functions(writer) +
-      envelope_functions(params.envelope) +
+      saturation + std::string(c_play_functions()) +
+      c_inverse_target_functions(writer, c_gain(ip.weights)) + envelope_functions(params.envelope) +
       CWriter::fill(
           "const @_params @_PARAMS = {\n    %A%,\n    %B%,\n    %R%,\n    %P%};\n\n"
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %IR%,\n    %IP%,\n    %A%,\n    %B%,\n"

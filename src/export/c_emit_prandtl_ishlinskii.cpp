@@ -60,8 +60,8 @@ static @_real @_held_input(const @_real *weights, const @_real *play) {
 
 )";
 
-std::string inverse_functions(const CWriter& writer) {
-  return c_inverse_target_functions(writer) + std::string(kHeldInputFunction);
+std::string inverse_functions(const CWriter& writer, double gain) {
+  return c_inverse_target_functions(writer, gain) + std::string(kHeldInputFunction);
 }
 
 std::string state_tables(const CWriter& writer, std::string_view name,
@@ -155,7 +155,7 @@ typedef struct {
   @_real offset;                  /* y_off */
 } @_inverse_params;
 )" + inverse_declarations();
-  code.source += "\n" + inverse_functions(writer) +
+  code.source += "\n" + inverse_functions(writer, c_gain(ip.weights)) +
                  CWriter::fill(
                      "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n"
                      "    %MIN%, %MAX%, %OFF%};\n\n",
@@ -274,7 +274,7 @@ typedef struct {
 } @_inverse_params;
 )" + inverse_declarations();
   code.source +=
-      "\n" + inverse_functions(writer) +
+      "\n" + inverse_functions(writer, c_gain(dz.weights) * c_gain(ip.weights)) +
       CWriter::fill(
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %D%,\n    %G%,\n    %OFF%,\n    %R%,\n"
           "    %P%,\n    %Q%, %MIN%, %MAX%};\n\n",

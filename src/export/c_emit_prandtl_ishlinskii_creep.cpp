@@ -341,7 +341,9 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       CWriter::fill(kCreepInverseTypes, {{"INVERSE_SHAPE_FIELDS", text.inverse_fields}}) +
       c_inverse_declarations("");
   code.source +=
-      "\n" + c_inverse_target_functions(writer) +
+      "\n" +
+      c_inverse_target_functions(
+          writer, c_gain(ip.weights) * (shaping ? c_gain(shaping->inverse.weights) : 1.0)) +
       CWriter::fill(
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n    %W%,\n"
           "    %MIN%, %MAX%%SHAPING%};\n\n",

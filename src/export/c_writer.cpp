@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -241,9 +242,18 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   return files;
 }
 
-std::string c_inverse_target_functions(const CWriter& writer) {
-  // Far beyond any output a fitted model reaches, yet so small that a sum of products of it with
-  // weights below 1e150 (double) or 1e18 (float) stays finite.
+double c_gain(std::span<const double> weights) {
+  double sum = 0.0;
+  for (const double w : weights)
+    sum += std::abs(w);
+  return std::max(1.0, sum);
+}
+
+std::string c_inverse_target_functions(const CWriter& writer, double gain) {
+  // No sum of the inverse overflows below it (every partial sum stays below a quarter of the
+  // largest number), and it lies far beyond any output a model reaches.
+  const double largest =
+      writer.single() ? std::numeric_limits<float>::max() : std::numeric_limits<double>::max();
   return CWriter::fill(
       R"(/* Targets beyond +-@_TARGET_LIMIT (and +-inf) are taken as +-@_TARGET_LIMIT: they give the
    extreme input in their direction, never inf - inf = NaN inside the inverse's sums. */
@@ -263,7 +273,7 @@ static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
 }
 
 )",
-      {{"LIMIT", writer.single() ? "1e18f" : "1e150"}});
+      {{"LIMIT", writer.number(0.25 * largest / gain)}});
 }
 
 std::string_view c_dead_zone_function() {

@@ -73,8 +73,13 @@ std::string_view c_play_functions();
 //! takes a target beyond +-@_TARGET_LIMIT (+-inf, or finite values so large that the inverse's sums
 //! would overflow to inf - inf = NaN) as that limit, so that it gives the extreme input in its
 //! direction; @_clamp() limits an input to [input_min, input_max] so that NaN cannot pass (it
-//! gives input_min). A NaN target is each inverse's own business: it holds the last input.
-std::string c_inverse_target_functions(const CWriter& writer);
+//! gives input_min). `gain` bounds how much the inverse multiplies its target by (the product of
+//! max(1, sum |w|) over its weighted sums, c_gain()): the limit is a quarter of the largest number
+//! of the scalar type over it, the bound the library's inverse PI puts on its target. A NaN target
+//! is each inverse's own business: it holds the last input.
+std::string c_inverse_target_functions(const CWriter& writer, double gain);
+//! max(1, sum |w_j|): the most a weighted sum with the weights `w` multiplies its values by.
+double c_gain(std::span<const double> weights);
 
 //! The C template of the dead-zone superposition S(x) = sum_i g_i S_{d_i}(x) over @_DEAD_ZONES
 //! zones, as the library's DeadZoneSuperposition; included once in a source file.
