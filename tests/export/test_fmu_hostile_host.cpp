@@ -444,6 +444,7 @@ TEST_F(FmuHostileHostTest, NonFiniteTargetsGiveTheClampedExtremeWithAWarning) {
   FmuInstance instance(*inverse_);
   for (int k = 0; k < 10; ++k)
     instance.sample(0.1 * k, 1e-3);
+  const auto& f = inverse_->functions();
   // The expected answers: the limits of [-1, 1] for +-inf and the overflowing 1e308; NaN holds
   // the input of the last step.
   const double last = instance.get(kOutput);
@@ -456,6 +457,11 @@ TEST_F(FmuHostileHostTest, NonFiniteTargetsGiveTheClampedExtremeWithAWarning) {
     EXPECT_EQ(instance.set(kInput, target), fmi2::Warning) << target;
     EXPECT_EQ(instance.get(kOutput), expected) << target;
     EXPECT_EQ(instance.step(1e-3), fmi2::OK);
+    // The state after it (plays out at the target bound) is a valid one: saved, it restores.
+    fmi2::FMUstate state = nullptr;
+    ASSERT_EQ(f.get_fmu_state(instance.component(), &state), fmi2::OK);
+    EXPECT_EQ(f.set_fmu_state(instance.component(), state), fmi2::OK) << instance.log();
+    f.free_fmu_state(instance.component(), &state);
     instance.sample(0.5, 1e-3);  // back inside
   }
   const double before_nan = instance.sample(0.42, 1e-3);
