@@ -148,13 +148,17 @@ CModelCode emit_c(const BoucWen& bouc_wen, const BoucWen::State& state, const CW
                           "at most 1000000",
                           p.substeps, writer.number(max_step)));
   code.parameters = {
-      c_scalar("a", p.a, CUnit::none, "A, the slope of z at z = 0"),
+      c_scalar("a", p.a, CUnit::none, "A, the slope of z at z = 0", CRule::positive),
       c_scalar("beta", p.beta, CUnit::none, "beta"),
-      c_scalar("gamma", p.gamma, CUnit::none, "gamma"),
-      c_scalar("stiffness", p.stiffness, CUnit::output_per_input, "stiffness k"),
-      c_scalar("alpha_k", p.alpha_k, CUnit::none, "ratio alpha_k of the linear part")};
+      c_scalar("gamma", p.gamma, CUnit::none, "gamma", CRule::within_previous),
+      c_scalar("stiffness", p.stiffness, CUnit::output_per_input, "stiffness k", CRule::positive),
+      c_scalar("alpha_k", p.alpha_k, CUnit::none, "ratio alpha_k of the linear part",
+               CRule::unit_interval)};
   // The exact scheme holds for n = 1 alone: n is a parameter of the RK4 rule only.
-  if (!exact) code.parameters.push_back(c_scalar("n", p.n, CUnit::none, "exponent n"));
+  if (!exact) {
+    code.parameters.push_back(c_scalar("n", p.n, CUnit::none, "exponent n", CRule::at_least_one));
+  }
+  code.state_check = "fmu_finite(&s->input, 1) && fmu_finite(&s->z, 1)";
   code.header =
       CWriter::fill(kBoucWenHeader, {{"RK4_FIELDS", exact ? "" : std::string(kRk4Fields)}}) +
       c_model_declarations("x = 0, z = 0",

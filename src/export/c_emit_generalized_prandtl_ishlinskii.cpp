@@ -145,19 +145,20 @@ void @_inverse_reset(@_inverse_state *state) {
 }
 
 @_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target) {
-  const @_real u =
-      @_play_sum(params->thresholds, params->weights, #(0.0), state->play, @_OPERATORS, target);
-  @_real input;
-  if (u > state->u) {
-    state->ascending = 1;
-  } else if (u < state->u) {
-    state->ascending = 0;
+  /* A NaN target holds the last input: u, its branch and the plays stay as they are. */
+  if (target == target) {
+    const @_real u = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
+                                @_OPERATORS, @_bounded_target(target));
+    if (u > state->u) {
+      state->ascending = 1;
+    } else if (u < state->u) {
+      state->ascending = 0;
+    }
+    state->u = u;
   }
-  state->u = u;
-  input = @_envelope_inverse(state->ascending ? params->ascending : params->descending, u);
-  if (input < params->input_min) return params->input_min;
-  if (input > params->input_max) return params->input_max;
-  return input;
+  return @_clamp(
+      @_envelope_inverse(state->ascending ? params->ascending : params->descending, state->u),
+      params->input_min, params->input_max);
 }
 )";
 
@@ -190,15 +191,23 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
       c_array("ascending", params.ascending, CUnit::none, "ascending " + envelope),
       c_array("descending", params.descending, CUnit::none, "descending " + envelope),
       c_array("thresholds", gpi.thresholds(), CUnit::none,
-              "operator thresholds r_j (envelope units)"),
-      c_array("weights", gpi.weights(), CUnit::none, "operator weights p_j")};
+              "operator thresholds r_j (envelope units)", CRule::increasing_from_zero),
+      c_array("weights", gpi.weights(), CUnit::none, "operator weights p_j",
+              CRule::partial_sums_positive)};
   code.inverse_parameters = {
-      c_array("thresholds", ip.thresholds, CUnit::output, "inverse play thresholds rh_j"),
-      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
+      c_array("thresholds", ip.thresholds, CUnit::output, "inverse play thresholds rh_j",
+              CRule::increasing_from_zero),
+      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j",
+              CRule::partial_sums_positive),
       c_array("ascending", params.ascending, CUnit::none, "ascending " + envelope),
       c_array("descending", params.descending, CUnit::none, "descending " + envelope),
-      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
-      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned",
+               CRule::lower_limit),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned",
+               CRule::upper_limit)};
+  code.state_check = "fmu_finite(s->play, @_OPERATORS)";
+  code.inverse_state_check =
+      "fmu_finite(s->play, @_OPERATORS) && fmu_finite(&s->u, 1) && (s->ascending & ~1) == 0";
   code.header = CWriter::fill(
       kGpiHeader, {{"N", std::to_string(gpi.size())},
                    {"K", std::to_string(E::coefficient_count)},
@@ -213,7 +222,8 @@ CModelCode emit_c(const GeneralizedPrandtlIshlinskii<E>& gpi,
           : fmt::format("#define @_SATURATION {}\n\n",
                         writer.number(saturation_limit(params.envelope, writer.single())));
   code.source =
-      saturation + std::string(c_play_functions()) + envelope_functions(params.envelope) +
+      saturation + std::string(c_play_functions()) +
+      c_inverse_target_functions(writer, c_gain(ip.weights)) + envelope_functions(params.envelope) +
       CWriter::fill(
           "const @_params @_PARAMS = {\n    %A%,\n    %B%,\n    %R%,\n    %P%};\n\n"
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %IR%,\n    %IP%,\n    %A%,\n    %B%,\n"

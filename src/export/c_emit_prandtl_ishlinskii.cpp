@@ -47,15 +47,22 @@ std::string inverse_declarations() {
   return std::string(kInverseStateType) + c_inverse_declarations("");
 }
 
-constexpr std::string_view kClampFunction =
-    R"(/* The inverse's input limits (the library's below_range / above_range answers). */
-static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
-  if (input < input_min) return input_min;
-  if (input > input_max) return input_max;
-  return input;
+// The input an inverse gave last, from its plays as they are: a NaN target holds it.
+constexpr std::string_view kHeldInputFunction =
+    R"(/* sum_j ph_j wh_j of the plays as they are: the input the last step returned, before its
+   limits. A NaN target holds it (and leaves the plays alone). */
+static @_real @_held_input(const @_real *weights, const @_real *play) {
+  @_real sum = #(0.0);
+  unsigned int j;
+  for (j = 0; j < @_OPERATORS; ++j) sum += weights[j] * play[j];
+  return sum;
 }
 
 )";
+
+std::string inverse_functions(const CWriter& writer, double gain) {
+  return c_inverse_target_functions(writer, gain) + std::string(kHeldInputFunction);
+}
 
 std::string state_tables(const CWriter& writer, std::string_view name,
                          const std::vector<double>& init, const std::vector<double>& reset) {
@@ -96,7 +103,9 @@ CModelCode emit_c(const PrandtlIshlinskii& pi, const PrandtlIshlinskii::State& s
       " * v = sum_j ph_j wh_j on y - y_off "
       "(include/hyst/inverse/inverse_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = pi.is_invertible();
-  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j"),
+  code.state_check = code.inverse_state_check = "fmu_finite(s->play, @_OPERATORS)";
+  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j",
+                             CRule::increasing_from_zero),
                      c_array("weights", p.weights, CUnit::output_per_input, "play weights p_j"),
                      c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header = CWriter::fill(R"(#define @_OPERATORS %N%
@@ -126,12 +135,15 @@ typedef struct {
 
   const InversePrandtlIshlinskii inverse(pi, {options.limits.input_min, options.limits.input_max});
   const auto& ip = inverse.inverse_operator().params();
-  code.inverse_parameters = {
-      c_array("thresholds", ip.thresholds, CUnit::output, "inverse play thresholds rh_j"),
-      c_array("weights", ip.weights, CUnit::input_per_output, "inverse play weights ph_j"),
-      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
-      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned"),
-      c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
+  code.inverse_parameters = {c_array("thresholds", ip.thresholds, CUnit::output,
+                                     "inverse play thresholds rh_j", CRule::increasing_from_zero),
+                             c_array("weights", ip.weights, CUnit::input_per_output,
+                                     "inverse play weights ph_j", CRule::partial_sums_positive),
+                             c_scalar("input_min", options.limits.input_min, CUnit::input,
+                                      "lowest input returned", CRule::lower_limit),
+                             c_scalar("input_max", options.limits.input_max, CUnit::input,
+                                      "highest input returned", CRule::upper_limit),
+                             c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header += R"(
 /* Inverse parameters: a PI operator with thresholds rh_j and weights ph_j on target - y_off,
    then the input limits. */
@@ -143,7 +155,7 @@ typedef struct {
   @_real offset;                  /* y_off */
 } @_inverse_params;
 )" + inverse_declarations();
-  code.source += "\n" + std::string(kClampFunction) +
+  code.source += "\n" + inverse_functions(writer, c_gain(ip.weights)) +
                  CWriter::fill(
                      "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n"
                      "    %MIN%, %MAX%, %OFF%};\n\n",
@@ -156,8 +168,10 @@ typedef struct {
                                          inverse.initial_state().play) +
                  R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
                      @_real target) {
-  const @_real input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
-                                  @_OPERATORS, target - params->offset);
+  const @_real input =
+      target != target ? @_held_input(params->weights, state->play)
+                       : @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
+                                    @_OPERATORS, @_bounded_target(target) - params->offset);
   return @_clamp(input, params->input_min, params->input_max);
 }
 )";
@@ -178,12 +192,14 @@ CModelCode emit_c(const ModifiedPrandtlIshlinskii& mpi,
       " * invertible: v = PI^-1[S^-1(y - y_off)], S^-1 again a dead-zone superposition\n"
       " * (include/hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp).\n";
   code.has_inverse = mpi.is_invertible();
+  code.state_check = code.inverse_state_check = "fmu_finite(s->play, @_OPERATORS)";
   code.parameters = {
-      c_array("thresholds", p.pi.thresholds, CUnit::input, "play thresholds r_j"),
+      c_array("thresholds", p.pi.thresholds, CUnit::input, "play thresholds r_j",
+              CRule::increasing_from_zero),
       c_array("weights", p.pi.weights, CUnit::none, "play weights p_j"),
       c_scalar("pi_offset", p.pi.offset, CUnit::none, "offset q of the PI part"),
       c_array("dead_zone_thresholds", p.dead_zone.thresholds, CUnit::none,
-              "dead-zone thresholds d_i (units of the PI part)"),
+              "dead-zone thresholds d_i (units of the PI part)", CRule::increasing),
       c_array("dead_zone_weights", p.dead_zone.weights, CUnit::none, "dead-zone weights g_i"),
       c_scalar("offset", p.offset, CUnit::output, "output offset y_off")};
   code.header = CWriter::fill(R"(#define @_OPERATORS %N%
@@ -231,14 +247,18 @@ typedef struct {
   const auto& dz = inverse.dead_zone_inverse().params();
   code.inverse_parameters = {
       c_array("dead_zone_thresholds", dz.thresholds, CUnit::output,
-              "inverse dead-zone thresholds d'_i"),
+              "inverse dead-zone thresholds d'_i", CRule::increasing),
       c_array("dead_zone_weights", dz.weights, CUnit::none, "inverse dead-zone weights g'_i"),
       c_scalar("offset", p.offset, CUnit::output, "output offset y_off"),
-      c_array("thresholds", ip.thresholds, CUnit::none, "inverse play thresholds rh_j"),
-      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
+      c_array("thresholds", ip.thresholds, CUnit::none, "inverse play thresholds rh_j",
+              CRule::increasing_from_zero),
+      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j",
+              CRule::partial_sums_positive),
       c_scalar("pi_offset", p.pi.offset, CUnit::none, "offset q of the PI part"),
-      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
-      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
+      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned",
+               CRule::lower_limit),
+      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned",
+               CRule::upper_limit)};
   code.header += R"(
 /* Inverse parameters: S^-1 (thresholds d'_i, weights g'_i) on target - y_off, then a PI operator
    with thresholds rh_j and weights ph_j on that minus q, then the input limits. */
@@ -254,7 +274,7 @@ typedef struct {
 } @_inverse_params;
 )" + inverse_declarations();
   code.source +=
-      "\n" + std::string(kClampFunction) +
+      "\n" + inverse_functions(writer, c_gain(dz.weights) * c_gain(ip.weights)) +
       CWriter::fill(
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %D%,\n    %G%,\n    %OFF%,\n    %R%,\n"
           "    %P%,\n    %Q%, %MIN%, %MAX%};\n\n",
@@ -270,10 +290,16 @@ typedef struct {
                               inverse.initial_state().play) +
       R"(@_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state,
                      @_real target) {
-  const @_real hysteresis = @_dead_zones(params->dead_zone_thresholds, params->dead_zone_weights,
-                                         target - params->offset);
-  const @_real input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play,
-                                  @_OPERATORS, hysteresis - params->pi_offset);
+  @_real input;
+  if (target != target) {
+    input = @_held_input(params->weights, state->play);
+  } else {
+    const @_real hysteresis = @_dead_zones(params->dead_zone_thresholds,
+                                           params->dead_zone_weights,
+                                           @_bounded_target(target) - params->offset);
+    input = @_play_sum(params->thresholds, params->weights, #(0.0), state->play, @_OPERATORS,
+                       hysteresis - params->pi_offset);
+  }
   return @_clamp(input, params->input_min, params->input_max);
 }
 )";

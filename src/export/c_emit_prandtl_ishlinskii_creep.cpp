@@ -136,13 +136,15 @@ static void @_resynchronise(const @_inverse_params *params, @_inverse_state *sta
   @_real shifted;
   @_real input;
   unsigned int j;
-%LAG_MEMORY%  shifted = %TARGET% - model->offset - memory;
-  for (j = 0; j < @_OPERATORS; ++j)
-    state->play[j] = @_play(shifted, params->thresholds[j], state->play[j]);
+  /* A NaN target holds the last input: the inverse's plays stay, the model steps on with it. */
+  if (target == target) {
+    target = @_bounded_target(target);
+%LAG_MEMORY%    shifted = %TARGET% - model->offset - memory;
+    for (j = 0; j < @_OPERATORS; ++j)
+      state->play[j] = @_play(shifted, params->thresholds[j], state->play[j]);
+  }
   for (j = 0; j < @_OPERATORS; ++j) sum += params->weights[j] * state->play[j];
-  input = sum;
-  if (input < params->input_min) input = params->input_min;
-  if (input > params->input_max) input = params->input_max;
+  input = @_clamp(sum, params->input_min, params->input_max);
   @_step(model, &state->model, input);
   if (input != sum) @_resynchronise(params, state);
   return input;
@@ -242,24 +244,31 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   // The modified model's S gives the output its units; the PI part's are then S's input units.
   const CUnit pi_unit = shaping ? CUnit::none : CUnit::output;
   const CUnit weight_unit = shaping ? CUnit::none : CUnit::output_per_input;
-  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j"),
+  code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j",
+                             CRule::increasing_from_zero),
                      c_array("weights", p.weights, weight_unit, "play weights p_j")};
   if (model.lags() > 0) {
     code.parameters.push_back(c_array("decay", model.decay(), CUnit::none,
-                                      "lag decays a_i = exp(-Ts / tau_i) at the sample time"));
+                                      "lag decays a_i = exp(-Ts / tau_i) at the sample time",
+                                      CRule::open_unit_interval));
     code.parameters.push_back(c_array("creep_weights", p.creep_weights, weight_unit,
                                       "creep weights c_ij (row i: lag, column j: play)"));
   }
   code.parameters.push_back(c_scalar("offset", p.offset, pi_unit, "offset of the PI with creep"));
   if (shaping) {
     code.parameters.push_back(c_array("dead_zone_thresholds", shaping->dead_zone.thresholds,
-                                      CUnit::none, "dead-zone thresholds d_i"));
+                                      CUnit::none, "dead-zone thresholds d_i", CRule::increasing));
     code.parameters.push_back(c_array("dead_zone_weights", shaping->dead_zone.weights, CUnit::none,
                                       "dead-zone weights g_i"));
     code.parameters.push_back(
         c_scalar("output_offset", shaping->offset, CUnit::output, "output offset y_off"));
   }
   const std::size_t creep_size = std::max<std::size_t>(1, model.size() * model.lags());
+  code.state_check = "fmu_finite(s->play, @_OPERATORS) && fmu_finite(s->creep, @_CREEP_SIZE)";
+  code.inverse_state_check =
+      "fmu_finite(s->model.play, @_OPERATORS) && "
+      "fmu_finite(s->model.creep, @_CREEP_SIZE) && "
+      "fmu_finite(s->play, @_OPERATORS)";
   code.header = CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
                                                          {"L", std::to_string(model.lags())},
                                                          {"SIZE", std::to_string(creep_size)},
@@ -302,16 +311,20 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   const auto& ip = inverse.instantaneous_inverse().inverse_operator().params();
   const auto init = inverse.state_consistent_with(state);
   const auto initial = inverse.initial_state();
-  code.inverse_parameters = {
-      c_array("thresholds", ip.thresholds, pi_unit, "inverse play thresholds rh_j"),
-      c_array("weights", ip.weights, CUnit::none, "inverse play weights ph_j"),
-      c_array("instantaneous", model.instantaneous_weights(), weight_unit,
-              "instantaneous weights p_j + sum_i c_ij (1 - a_i)"),
-      c_scalar("input_min", options.limits.input_min, CUnit::input, "lowest input returned"),
-      c_scalar("input_max", options.limits.input_max, CUnit::input, "highest input returned")};
+  code.inverse_parameters = {c_array("thresholds", ip.thresholds, pi_unit,
+                                     "inverse play thresholds rh_j", CRule::increasing_from_zero),
+                             c_array("weights", ip.weights, CUnit::none,
+                                     "inverse play weights ph_j", CRule::partial_sums_positive),
+                             c_array("instantaneous", model.instantaneous_weights(), weight_unit,
+                                     "instantaneous weights p_j + sum_i c_ij (1 - a_i)"),
+                             c_scalar("input_min", options.limits.input_min, CUnit::input,
+                                      "lowest input returned", CRule::lower_limit),
+                             c_scalar("input_max", options.limits.input_max, CUnit::input,
+                                      "highest input returned", CRule::upper_limit)};
   if (shaping) {
     code.inverse_parameters.push_back(c_array("dead_zone_thresholds", shaping->inverse.thresholds,
-                                              CUnit::output, "inverse dead-zone thresholds d'_i"));
+                                              CUnit::output, "inverse dead-zone thresholds d'_i",
+                                              CRule::increasing));
     code.inverse_parameters.push_back(c_array("dead_zone_weights", shaping->inverse.weights,
                                               CUnit::none, "inverse dead-zone weights g'_i"));
     code.inverse_parameters.push_back(
@@ -329,6 +342,8 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       c_inverse_declarations("");
   code.source +=
       "\n" +
+      c_inverse_target_functions(
+          writer, c_gain(ip.weights) * (shaping ? c_gain(shaping->inverse.weights) : 1.0)) +
       CWriter::fill(
           "const @_inverse_params @_INVERSE_PARAMS = {\n    %R%,\n    %P%,\n    %W%,\n"
           "    %MIN%, %MAX%%SHAPING%};\n\n",

@@ -402,19 +402,28 @@ CModelCode emit_c(const Preisach& preisach, const PreisachState& state, const CW
   // The Everett table is the model's weight distribution in the form the step uses; the level
   // spacing only speeds up the level search and stays as exported.
   code.parameters = {
-      c_array("thresholds", levels, CUnit::input, "threshold levels c_k"),
+      c_array("thresholds", levels, CUnit::input, "threshold levels c_k", CRule::increasing),
       c_array("diagonal", diagonal, CUnit::output, "diagonal relay weights mu_kk"),
       c_array("everett", table, CUnit::output, "Everett table T[a][c] at a (N + 1) + c"),
-      c_scalar("lower", everett.lower(), CUnit::input, "lowest input of the relay grid"),
+      c_scalar("lower", everett.lower(), CUnit::input, "lowest input of the relay grid",
+               CRule::lower_limit),
       c_scalar("upper", everett.upper(), CUnit::input, "highest input of the relay grid"),
       c_scalar("offset", preisach.params().offset, CUnit::output, "output offset y_off"),
       c_scalar("total", preisach.total_weight(), CUnit::output, "total relay weight F0")};
-  code.inverse_parameters = {
-      c_scalar("input_min", inverse.input_min(), CUnit::input, "lowest input returned"),
-      c_scalar("input_max", inverse.input_max(), CUnit::input, "highest input returned"),
-      c_scalar("tolerance", inverse.input_tolerance(), CUnit::input,
-               "bracket width that ends the search"),
-      c_scalar("output_tolerance", 0.0, CUnit::output, "|y - target| that ends the search")};
+  code.inverse_parameters = {c_scalar("input_min", inverse.input_min(), CUnit::input,
+                                      "lowest input returned", CRule::lower_limit),
+                             c_scalar("input_max", inverse.input_max(), CUnit::input,
+                                      "highest input returned", CRule::upper_limit),
+                             c_scalar("tolerance", inverse.input_tolerance(), CUnit::input,
+                                      "bracket width that ends the search", CRule::nonnegative),
+                             c_scalar("output_tolerance", 0.0, CUnit::output,
+                                      "|y - target| that ends the search", CRule::nonnegative)};
+  // The memory: 1 ... capacity entries, x_0 = -+inf, the later extrema and every running sum
+  // finite (the last input may be -+inf after a saturation).
+  code.state_check = code.inverse_state_check =
+      "s->size >= 1u && s->size <= @_CAPACITY && isinf(s->extrema[0]) && "
+      "fmu_finite(s->extrema + 1, s->size - 1u) && fmu_finite(s->partial, s->size) && "
+      "s->input == s->input";
   code.header = CWriter::fill(
       kPreisachHeader,
       {{"N", std::to_string(n)},

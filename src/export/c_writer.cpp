@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -178,7 +179,10 @@ extern const @_inverse_params @_INVERSE_PARAMS;
 void @_inverse_init(@_inverse_state *state);
 /* Inverse in the state consistent with the model's default initial state. */
 void @_inverse_reset(@_inverse_state *state);
-/* The input that makes the model produce `target`%STEP%; advances the inverse's state. */
+/* The input that makes the model produce `target`%STEP%; advances the inverse's state.
+   A target out of reach, +-inf included, gives the extreme input in its direction (the input
+   limit, or without one a finite input far out); a NaN target returns the last input again and
+   leaves the inverse's state as it was (a model with lags steps them on). Never NaN. */
 @_real @_inverse_step(const @_inverse_params *params, @_inverse_state *state, @_real target);
 )",
                        {{"STEP", std::string(step_note)}});
@@ -214,6 +218,8 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   files.parameters = code.parameters;
   files.inverse_parameters = code.inverse_parameters;
   files.sample_time = code.sample_time;
+  files.state_check = writer.expand(code.state_check);
+  files.inverse_state_check = writer.expand(code.inverse_state_check);
   const std::string declarations = writer.expand(code.header);
   const std::string definitions = writer.expand(code.source);
   const std::string stamp_name = guard_base + "_EXPORT_STAMP";
@@ -234,6 +240,40 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
       files.source_name, preamble, files.header_name, stamp_name, stamp_name, stamp,
       files.header_name, files.source_name, definitions);
   return files;
+}
+
+double c_gain(std::span<const double> weights) {
+  double sum = 0.0;
+  for (const double w : weights)
+    sum += std::abs(w);
+  return std::max(1.0, sum);
+}
+
+std::string c_inverse_target_functions(const CWriter& writer, double gain) {
+  // No sum of the inverse overflows below it (every partial sum stays below a quarter of the
+  // largest number), and it lies far beyond any output a model reaches.
+  const double largest =
+      writer.single() ? std::numeric_limits<float>::max() : std::numeric_limits<double>::max();
+  return CWriter::fill(
+      R"(/* Targets beyond +-@_TARGET_LIMIT (and +-inf) are taken as +-@_TARGET_LIMIT: they give the
+   extreme input in their direction, never inf - inf = NaN inside the inverse's sums. */
+#define @_TARGET_LIMIT %LIMIT%
+static @_real @_bounded_target(@_real target) {
+  if (target > @_TARGET_LIMIT) return @_TARGET_LIMIT;
+  if (target < -@_TARGET_LIMIT) return -@_TARGET_LIMIT;
+  return target;
+}
+
+/* The inverse's input limits (the library's below_range / above_range answers), written so that
+   NaN cannot pass: it gives input_min. */
+static @_real @_clamp(@_real input, @_real input_min, @_real input_max) {
+  if (!(input >= input_min)) return input_min;
+  if (input > input_max) return input_max;
+  return input;
+}
+
+)",
+      {{"LIMIT", writer.number(0.25 * largest / gain)}});
 }
 
 std::string_view c_dead_zone_function() {
@@ -259,13 +299,15 @@ static @_real @_dead_zones(const @_real *thresholds, const @_real *weights, @_re
   ;
 }
 
-CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description) {
-  return {std::move(name), {value}, false, unit, std::move(description)};
+CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description,
+                         CRule rule) {
+  return {std::move(name), {value}, false, unit, std::move(description), rule};
 }
 
 CParameterField c_array(std::string name, std::span<const double> values, CUnit unit,
-                        std::string description) {
-  return {std::move(name), {values.begin(), values.end()}, true, unit, std::move(description)};
+                        std::string description, CRule rule) {
+  return {
+      std::move(name), {values.begin(), values.end()}, true, unit, std::move(description), rule};
 }
 
 std::string c_output_limits(const CWriter& writer, double output_min, double output_max) {

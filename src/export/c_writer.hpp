@@ -25,12 +25,15 @@ struct CModelCode {
   std::vector<CParameterField> parameters;          //!< see CCode::parameters
   std::vector<CParameterField> inverse_parameters;  //!< see CCode::inverse_parameters
   double sample_time = 0.0;                         //!< see CCode::sample_time
+  std::string state_check = "1";                    //!< see CCode::state_check
+  std::string inverse_state_check = "1";            //!< see CCode::inverse_state_check
 };
 
 //! A scalar or an array field of an exported parameter struct, for CModelCode::parameters.
-CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description);
+CParameterField c_scalar(std::string name, double value, CUnit unit, std::string description,
+                         CRule rule = CRule::finite);
 CParameterField c_array(std::string name, std::span<const double> values, CUnit unit,
-                        std::string description);
+                        std::string description, CRule rule = CRule::finite);
 
 //! FNV-1a, 64 bits: a stable digest of exported text (identical exports, identical stamp).
 std::uint64_t text_digest(std::initializer_list<std::string_view> parts);
@@ -65,6 +68,18 @@ class CWriter {
 //! The C template of the functions the PI family shares (one play step, a play-and-sum step over
 //! n operators, the input clamp of the inverses); included once in a source file.
 std::string_view c_play_functions();
+
+//! The C template of what every inverse does with its target and its answer: @_bounded_target()
+//! takes a target beyond +-@_TARGET_LIMIT (+-inf, or finite values so large that the inverse's sums
+//! would overflow to inf - inf = NaN) as that limit, so that it gives the extreme input in its
+//! direction; @_clamp() limits an input to [input_min, input_max] so that NaN cannot pass (it
+//! gives input_min). `gain` bounds how much the inverse multiplies its target by (the product of
+//! max(1, sum |w|) over its weighted sums, c_gain()): the limit is a quarter of the largest number
+//! of the scalar type over it, the bound the library's inverse PI puts on its target. A NaN target
+//! is each inverse's own business: it holds the last input.
+std::string c_inverse_target_functions(const CWriter& writer, double gain);
+//! max(1, sum |w_j|): the most a weighted sum with the weights `w` multiplies its values by.
+double c_gain(std::span<const double> weights);
 
 //! The C template of the dead-zone superposition S(x) = sum_i g_i S_{d_i}(x) over @_DEAD_ZONES
 //! zones, as the library's DeadZoneSuperposition; included once in a source file.

@@ -1,6 +1,7 @@
 // modelDescription.xml of an FMU (fmu_parts.hpp), as the FMI 2.0 standard's schema
 // (fmi2ModelDescription.xsd) describes it.
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -16,11 +17,18 @@ std::string unit_attribute(const std::string& unit) {
   return unit.empty() ? std::string() : fmt::format(" unit=\"{}\"", io::xml_escaped(unit));
 }
 
+// An xs:double in its lexical form: INF and -INF for the infinities (the schema's spelling;
+// "inf" is no xs:double and a validating importer refuses the file).
 std::string number(double value) {
+  if (std::isinf(value)) return value > 0.0 ? "INF" : "-INF";
   return fmt::format("{:.17g}", value);
 }
 
 }  // namespace
+
+std::string fmu_variable_name(const CParameterField& field, std::size_t k) {
+  return field.array ? fmt::format("{}[{}]", field.name, k + 1) : field.name;
+}
 
 std::string FmuUnit::unit_name(CUnit unit) const {
   const bool both = !model_input_unit.empty() && !model_output_unit.empty();
@@ -68,9 +76,8 @@ std::string fmu_model_description(const FmuUnit& unit) {
   for (const auto& field : unit.parameters()) {
     const std::string unit_text = use(unit.unit_name(field.unit));
     for (std::size_t k = 0; k < field.values.size(); ++k, ++reference) {
-      const std::string name = field.array ? fmt::format("{}[{}]", field.name, k + 1) : field.name;
-      variables += variable(name, reference, "parameter", "variability=\"fixed\" initial=\"exact\"",
-                            field.description,
+      variables += variable(fmu_variable_name(field, k), reference, "parameter",
+                            "variability=\"fixed\" initial=\"exact\"", field.description,
                             fmt::format(" start=\"{}\"{}", number(field.values[k]), unit_text));
     }
   }

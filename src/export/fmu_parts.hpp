@@ -41,6 +41,10 @@ struct FmuUnit {
   std::string wrapper_name() const { return identifier + "_fmi2.c"; }
 };
 
+//! The FMU's name of element `k` of a parameter field: "thresholds[3]" (counted from 1) for an
+//! array, the field's name for a scalar.
+std::string fmu_variable_name(const CParameterField& field, std::size_t k);
+
 //! The FMI 2.0 types and co-simulation functions, declared from the standard's text.
 inline constexpr std::string_view kFmi2DeclarationsName = "fmi2_declarations.h";
 std::string_view fmi2_declarations();

@@ -20,6 +20,11 @@ constexpr std::string_view kWrapper = R"C(/* %FILE%: the FMI 2.0 co-simulation i
  * Variables (value references): 0 the input, 1 the output, 2 ... the parameters, in the order of
  * modelDescription.xml. The output at a communication point is the model's step for the input set
  * there, from the state the earlier points left; fmi2DoStep keeps that state.
+ *
+ * A host that breaks the FMI rules gets fmi2Error, never a crash: every function first looks its
+ * component up among the live instances of this library (a freed or foreign pointer is never
+ * read), checks its pointers, checks parameters by the model's own rules and restored states by
+ * their checksum and contents.
  */
 #include <math.h>
 #include <stddef.h>
@@ -33,6 +38,8 @@ constexpr std::string_view kWrapper = R"C(/* %FILE%: the FMI 2.0 co-simulation i
 #define FMU_INPUT 0u
 #define FMU_OUTPUT 1u
 #define FMU_FIRST_PARAMETER 2u
+/* 1: the inverse compensator, whose target may be non-finite (a warning, the extreme input). */
+#define FMU_INVERSE %INVERSE%
 /* The sample time a step assumes [s]; 0: any communication step. */
 #define FMU_SAMPLE_TIME %SAMPLE_TIME%
 /* The relative step of the directional derivative's difference quotient. */
@@ -40,11 +47,37 @@ constexpr std::string_view kWrapper = R"C(/* %FILE%: the FMI 2.0 co-simulation i
 /* Marks a saved state of this export (a digest of it). */
 #define FMU_STATE_MAGIC 0x%DIGEST%ULL
 
+#if defined(__GNUC__)
+#define FMU_MAYBE_UNUSED __attribute__((unused))
+#else
+#define FMU_MAYBE_UNUSED
+#endif
+
 typedef %PARAMS_TYPE% fmu_params;
 typedef %STATE_TYPE% fmu_state;
 
-/* Where each parameter lies in fmu_params (one spare element: C has no empty arrays). */
+/* Where each parameter lies in fmu_params, its name, the rule it must obey and whether it starts
+   a field (one spare element each: C has no empty arrays). */
 static const size_t fmu_parameter_offsets[FMU_PARAMETERS + 1u] = {%OFFSETS%};
+static const char *const fmu_parameter_names[FMU_PARAMETERS + 1u] = {%NAMES%};
+static const unsigned char fmu_parameter_rules[FMU_PARAMETERS + 1u] = {%RULES%};
+static const unsigned char fmu_parameter_starts_field[FMU_PARAMETERS + 1u] = {%STARTS%};
+
+/* The rules, numbered as hyst's CRule. */
+enum {
+  fmu_rule_finite,
+  fmu_rule_increasing_from_zero,
+  fmu_rule_increasing,
+  fmu_rule_partial_sums_positive,
+  fmu_rule_positive,
+  fmu_rule_nonnegative,
+  fmu_rule_at_least_one,
+  fmu_rule_unit_interval,
+  fmu_rule_open_unit_interval,
+  fmu_rule_within_previous,
+  fmu_rule_lower_limit,
+  fmu_rule_upper_limit
+};
 
 typedef enum {
   fmu_instantiated,
@@ -54,40 +87,264 @@ typedef enum {
   fmu_failed
 } fmu_mode;
 
-/* What fmi2GetFMUstate saves and serialisation writes: plain values, no pointers. */
+/* What fmi2GetFMUstate saves and serialisation writes: plain values, no pointers. The checksum
+   covers every byte after it; the mode is the instance's, so that a fresh instance that restores
+   a state saved while stepping steps on. */
 typedef struct {
   unsigned long long magic;
+  unsigned long long checksum;
   fmi2Real time;
   fmi2Real input;
   fmi2Real output;
   int output_valid;
+  int mode;
   fmu_state state;   /* after the samples of the earlier communication points */
   fmu_state sample;  /* after the current input's sample, when output_valid */
   fmi2Real parameters[FMU_PARAMETERS + 1u];
 } fmu_snapshot;
 
+/* A member of a registry of live objects: the first field of an instance and of a saved state. */
+typedef struct fmu_link_s {
+  struct fmu_link_s *next;
+} fmu_link;
+
 typedef struct {
+  fmu_link link; /* in the registry of live instances */
   fmi2CallbackLogger logger;
   fmi2CallbackAllocateMemory allocate;
   fmi2CallbackFreeMemory release;
   fmi2ComponentEnvironment environment;
   char *name;
-  fmu_mode mode;
   fmu_params params;
   fmu_snapshot now;
 } fmu_instance;
 
-static void fmu_log_error(const fmu_instance *fmu, const char *message) {
-  if (fmu->logger != NULL) fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "%s", message);
+/* The live instances and the live saved states of this library. A function looks its component
+   (and a state) up here before it reads it, so that NULL, a pointer freed before (a second free),
+   an uninitialised or any other pointer is refused without being read. A state has a registry of
+   the library's, not of its instance: it may be restored into another instance. The lists are
+   guarded by a spin lock: instances may live on several threads (the FMI allows calls for
+   different instances at the same time). */
+static fmu_link *fmu_instances = NULL;
+static fmu_link *fmu_states = NULL;
+#if defined(__GNUC__)
+static char fmu_registry_busy = 0;
+static void fmu_lock(void) {
+  while (__atomic_test_and_set(&fmu_registry_busy, __ATOMIC_ACQUIRE)) {
+  }
+}
+static void fmu_unlock(void) { __atomic_clear(&fmu_registry_busy, __ATOMIC_RELEASE); }
+#else
+static void fmu_lock(void) {}
+static void fmu_unlock(void) {}
+#endif
+
+/* The member of `list` at `p`, or NULL. */
+static fmu_link *fmu_find(fmu_link *const *list, const void *p) {
+  fmu_link *found = NULL;
+  fmu_link *member;
+  if (p == NULL) return NULL;
+  fmu_lock();
+  for (member = *list; member != NULL && found == NULL; member = member->next)
+    if ((const void *)member == p) found = member;
+  fmu_unlock();
+  return found;
+}
+
+static void fmu_add(fmu_link **list, fmu_link *member) {
+  fmu_lock();
+  member->next = *list;
+  *list = member;
+  fmu_unlock();
+}
+
+/* Takes the member at `p` out of `list`; returns it, or NULL when it was not there. */
+static fmu_link *fmu_remove(fmu_link **list, const void *p) {
+  fmu_link *found = NULL;
+  fmu_link **at;
+  fmu_lock();
+  for (at = list; *at != NULL; at = &(*at)->next) {
+    if ((const void *)*at == p) {
+      found = *at;
+      *at = found->next;
+      break;
+    }
+  }
+  fmu_unlock();
+  return found;
+}
+
+static fmu_instance *fmu_live(fmi2Component c) {
+  return (fmu_instance *)fmu_find(&fmu_instances, c);
+}
+
+/* A saved state as the host holds it: the snapshot, with the free function of the instance that
+   allocated it (a state may outlive its instance). */
+typedef struct {
+  fmu_link link; /* in the registry of live states */
+  fmi2CallbackFreeMemory release;
+  fmu_snapshot snapshot;
+} fmu_saved;
+
+static fmu_saved *fmu_saved_live(fmi2FMUstate state) {
+  return (fmu_saved *)fmu_find(&fmu_states, state);
+}
+
+static fmu_saved *fmu_saved_new(fmu_instance *fmu) {
+  fmu_saved *saved = (fmu_saved *)fmu->allocate(1, sizeof(fmu_saved));
+  if (saved == NULL) return NULL;
+  saved->release = fmu->release;
+  fmu_add(&fmu_states, &saved->link);
+  return saved;
+}
+
+/* Frees a live state; 0 when `state` is not one. */
+static int fmu_saved_free(fmi2FMUstate state) {
+  fmu_saved *found = (fmu_saved *)fmu_remove(&fmu_states, state);
+  if (found == NULL) return 0;
+  found->release(found);
+  return 1;
 }
 
 static fmi2Status fmu_error(fmu_instance *fmu, const char *message) {
-  fmu_log_error(fmu, message);
+  if (fmu->logger != NULL)
+    fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "%s", message);
   return fmi2Error;
 }
 
+static fmi2Status fmu_warning(fmu_instance *fmu, const char *message) {
+  if (fmu->logger != NULL)
+    fmu->logger(fmu->environment, fmu->name, fmi2Warning, "logStatusWarning", "%s", message);
+  return fmi2Warning;
+}
+
+/* The component of a call, or NULL (the call answers fmi2Error): there is no callback to log
+   through for a component that is not a live instance. */
+#define FMU_INSTANCE(fmu, c) \
+  fmu_instance *fmu = fmu_live(c); \
+  if (fmu == NULL) return fmi2Error
+
 static @_real *fmu_parameter(fmu_params *params, size_t k) {
   return (@_real *)((char *)params + fmu_parameter_offsets[k]);
+}
+
+/* FNV-1a, 64 bits, of the snapshot's bytes after its checksum. */
+static unsigned long long fmu_checksum(const fmu_snapshot *snapshot) {
+  const unsigned char *byte = (const unsigned char *)&snapshot->time;
+  const unsigned char *end = (const unsigned char *)snapshot + sizeof(fmu_snapshot);
+  unsigned long long hash = 0xcbf29ce484222325ULL;
+  for (; byte < end; ++byte) {
+    hash ^= *byte;
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+/* Every value finite. No bound on the magnitude: an inverse's plays legitimately reach its target
+   bound (up to a quarter of the largest number) after a target of +-inf. */
+static FMU_MAYBE_UNUSED int fmu_finite(const @_real *values, size_t n) {
+  size_t i;
+  for (i = 0; i < n; ++i)
+    if (!isfinite(values[i])) return 0;
+  return 1;
+}
+
+/* Logs why parameter k (value v) breaks its rule; 0. */
+static int fmu_refuse_parameter(fmu_instance *fmu, const char *function, size_t k, double v,
+                                const char *rule) {
+  if (fmu->logger != NULL)
+    fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError",
+                "%s: the parameter %s = %.17g %s", function, fmu_parameter_names[k], v, rule);
+  return 0;
+}
+
+/* Parameter k of the instance's parameters (source: its fmu_params) or of a snapshot's (its
+   fmi2Real array): the rules read both without a copy, which for a large model would not fit on
+   the stack. */
+typedef double (*fmu_value_of)(const void *source, size_t k);
+static double fmu_value_of_params(const void *source, size_t k) {
+  return (double)*fmu_parameter((fmu_params *)source, k);
+}
+static double fmu_value_of_array(const void *source, size_t k) {
+  return (double)((const fmi2Real *)source)[k];
+}
+
+/* The model's rules on the parameters of `source` (the library's validation, element by
+   element); 1 when they hold, else 0 after a log line naming the first one that breaks one. */
+static int fmu_parameters_valid(fmu_instance *fmu, const char *function, fmu_value_of value_of,
+                                const void *source) {
+  double sum = 0.0;
+  size_t k;
+  for (k = 0; k < FMU_PARAMETERS; ++k) {
+    const double v = value_of(source, k);
+    const double previous = k > 0 ? value_of(source, k - 1) : 0.0;
+    const int first = fmu_parameter_starts_field[k];
+    const unsigned char rule = fmu_parameter_rules[k];
+    sum = first ? v : sum + v;
+    if (rule == fmu_rule_lower_limit) {
+      if (!(v <= value_of(source, k + 1)))
+        return fmu_refuse_parameter(fmu, function, k, v, "must be <= the upper limit after it");
+      continue;
+    }
+    if (rule == fmu_rule_upper_limit) {
+      if (v != v) return fmu_refuse_parameter(fmu, function, k, v, "is not a number");
+      continue;
+    }
+    if (!isfinite(v)) return fmu_refuse_parameter(fmu, function, k, v, "is not finite");
+    if (rule == fmu_rule_increasing_from_zero && first && v != 0.0)
+      return fmu_refuse_parameter(fmu, function, k, v, "must be 0 (the first threshold)");
+    if ((rule == fmu_rule_increasing_from_zero || rule == fmu_rule_increasing) && !first && !(v > previous))
+      return fmu_refuse_parameter(fmu, function, k, v, "must be > the element before it");
+    if (rule == fmu_rule_partial_sums_positive && !(sum > 0.0))
+      return fmu_refuse_parameter(fmu, function, k, v,
+                                  "makes a partial sum of its weights <= 0 (not invertible)");
+    if (rule == fmu_rule_positive && !(v > 0.0))
+      return fmu_refuse_parameter(fmu, function, k, v, "must be > 0");
+    if (rule == fmu_rule_nonnegative && !(v >= 0.0))
+      return fmu_refuse_parameter(fmu, function, k, v, "must be >= 0");
+    if (rule == fmu_rule_at_least_one && !(v >= 1.0))
+      return fmu_refuse_parameter(fmu, function, k, v, "must be >= 1");
+    if (rule == fmu_rule_unit_interval && !(v >= 0.0 && v <= 1.0))
+      return fmu_refuse_parameter(fmu, function, k, v, "must lie in [0, 1]");
+    if (rule == fmu_rule_open_unit_interval && !(v > 0.0 && v < 1.0))
+      return fmu_refuse_parameter(fmu, function, k, v, "must lie in (0, 1)");
+    if (rule == fmu_rule_within_previous && !(previous + v > 0.0 && previous - v >= 0.0))
+      return fmu_refuse_parameter(fmu, function, k, v,
+                                  "must satisfy beta + gamma > 0 and beta - gamma >= 0");
+  }
+  return 1;
+}
+
+/* The current parameters as values, into `values`. */
+static void fmu_parameter_values(fmu_instance *fmu, fmi2Real *values) {
+  size_t k;
+  for (k = 0; k < FMU_PARAMETERS; ++k) values[k] = (fmi2Real)*fmu_parameter(&fmu->params, k);
+  values[FMU_PARAMETERS] = 0.0;
+}
+
+/* Whether the state `s` is one the step can take (the C export's own test of its state). */
+static int fmu_state_valid(const fmu_state *s) {
+  (void)s;
+  return %STATE_CHECK%;
+}
+
+/* Why `snapshot` cannot be restored, or NULL: a foreign mark, a checksum that does not match
+   (a byte changed since it was saved), or contents that no run of this FMU leaves. */
+static const char *fmu_snapshot_problem(const fmu_snapshot *snapshot) {
+  if (snapshot->magic != FMU_STATE_MAGIC) return "not a state of this FMU";
+  if (snapshot->checksum != fmu_checksum(snapshot))
+    return "the state's checksum does not match: it was changed after it was saved";
+  if (snapshot->mode < (int)fmu_instantiated || snapshot->mode > (int)fmu_failed)
+    return "the state holds no valid mode";
+  if (!isfinite(snapshot->time)) return "the state's time is not finite";
+  if (!FMU_INVERSE && !isfinite(snapshot->input)) return "the state's input is not finite";
+  if (snapshot->output_valid != 0 && snapshot->output_valid != 1)
+    return "the state's output flag is neither 0 nor 1";
+  if (snapshot->output_valid && (!isfinite(snapshot->output) || !fmu_state_valid(&snapshot->sample)))
+    return "the state's output is not finite or its sample state is not valid";
+  if (!fmu_state_valid(&snapshot->state))
+    return "the state holds non-finite values or a memory out of its bounds";
+  return NULL;
 }
 
 static void fmu_start(fmu_instance *fmu) {
@@ -96,13 +353,13 @@ static void fmu_start(fmu_instance *fmu) {
   fmu->now.magic = FMU_STATE_MAGIC;
   %INIT%(&fmu->now.state);
   fmu->now.input = %INPUT_START%;
-  fmu->mode = fmu_instantiated;
+  fmu->now.mode = fmu_instantiated;
 }
 
 /* The output for the current input, from the state of the earlier points. */
 static void fmu_evaluate(fmu_instance *fmu) {
   if (fmu->now.output_valid) return;
-  fmu->now.sample = fmu->now.state;
+  memcpy(&fmu->now.sample, &fmu->now.state, sizeof(fmu_state));
   fmu->now.output = (fmi2Real)%STEP%(&fmu->params, &fmu->now.sample, (@_real)fmu->now.input);
   fmu->now.output_valid = 1;
 }
@@ -113,10 +370,10 @@ FMU_EXPORT const char *fmi2GetVersion(void) { return fmi2Version; }
 
 FMU_EXPORT fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn,
                                           size_t nCategories, const fmi2String categories[]) {
-  (void)c;
+  FMU_INSTANCE(fmu, c);
   (void)loggingOn;
-  (void)nCategories;
-  (void)categories;
+  if (nCategories > 0 && categories == NULL)
+    return fmu_error(fmu, "fmi2SetDebugLogging: nCategories > 0 but categories is NULL");
   return fmi2OK; /* errors are always reported; there is nothing else to log */
 }
 
@@ -141,8 +398,8 @@ FMU_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuTy
   }
   if (problem != NULL) {
     if (functions->logger != NULL)
-      functions->logger(functions->componentEnvironment, instanceName, fmi2Error,
-                        "logStatusError", "%s", problem);
+      functions->logger(functions->componentEnvironment, instanceName != NULL ? instanceName : "",
+                        fmi2Error, "logStatusError", "%s", problem);
     return NULL;
   }
   fmu = (fmu_instance *)functions->allocateMemory(1, sizeof(fmu_instance));
@@ -159,11 +416,14 @@ FMU_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuTy
   fmu->release = functions->freeMemory;
   fmu->environment = functions->componentEnvironment;
   fmu_start(fmu);
+  fmu_add(&fmu_instances, &fmu->link);
   return fmu;
 }
 
+/* A component that is not live (NULL, freed before, foreign) is left alone: freeing twice is
+   harmless. */
 FMU_EXPORT void fmi2FreeInstance(fmi2Component c) {
-  fmu_instance *fmu = (fmu_instance *)c;
+  fmu_instance *fmu = (fmu_instance *)fmu_remove(&fmu_instances, c);
   if (fmu == NULL) return;
   fmu->release(fmu->name);
   fmu->release(fmu);
@@ -172,12 +432,12 @@ FMU_EXPORT void fmi2FreeInstance(fmi2Component c) {
 FMU_EXPORT fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
                                           fmi2Real tolerance, fmi2Real startTime,
                                           fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
-  fmu_instance *fmu = (fmu_instance *)c;
+  FMU_INSTANCE(fmu, c);
   (void)toleranceDefined;
   (void)tolerance;
   (void)stopTimeDefined;
   (void)stopTime;
-  if (fmu->mode != fmu_instantiated)
+  if (fmu->now.mode != fmu_instantiated)
     return fmu_error(fmu, "fmi2SetupExperiment: only before initialisation");
   if (!isfinite(startTime)) return fmu_error(fmu, "fmi2SetupExperiment: the start time is not finite");
   fmu->now.time = startTime;
@@ -185,36 +445,43 @@ FMU_EXPORT fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance
 }
 
 FMU_EXPORT fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  if (fmu->mode != fmu_instantiated)
+  FMU_INSTANCE(fmu, c);
+  if (fmu->now.mode != fmu_instantiated)
     return fmu_error(fmu, "fmi2EnterInitializationMode: only once, after fmi2Instantiate");
-  fmu->mode = fmu_initialization;
+  fmu->now.mode = fmu_initialization;
   return fmi2OK;
 }
 
+/* The parameters the host set are checked here, by the model's rules: a refused one leaves the
+   FMU in initialisation mode, to be set again. */
 FMU_EXPORT fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  if (fmu->mode != fmu_initialization)
+  FMU_INSTANCE(fmu, c);
+  if (fmu->now.mode != fmu_initialization)
     return fmu_error(fmu, "fmi2ExitInitializationMode: not in initialisation mode");
-  fmu->mode = fmu_stepping;
+  if (!fmu_parameters_valid(fmu, "fmi2ExitInitializationMode", fmu_value_of_params, &fmu->params))
+    return fmi2Error;
+  fmu->now.mode = fmu_stepping;
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2Terminate(fmi2Component c) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  fmu->mode = fmu_terminated;
+  FMU_INSTANCE(fmu, c);
+  fmu->now.mode = fmu_terminated;
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2Reset(fmi2Component c) {
-  fmu_start((fmu_instance *)c);
+  FMU_INSTANCE(fmu, c);
+  fmu_start(fmu);
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                   fmi2Real value[]) {
-  fmu_instance *fmu = (fmu_instance *)c;
   size_t i;
+  FMU_INSTANCE(fmu, c);
+  if (nvr > 0 && (vr == NULL || value == NULL))
+    return fmu_error(fmu, "fmi2GetReal: nvr > 0 but vr or value is NULL");
   for (i = 0; i < nvr; ++i) {
     if (vr[i] == FMU_INPUT) {
       value[i] = fmu->now.input;
@@ -232,16 +499,27 @@ FMU_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[]
 
 FMU_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                   const fmi2Real value[]) {
-  fmu_instance *fmu = (fmu_instance *)c;
+  fmi2Status status = fmi2OK;
   size_t i;
+  FMU_INSTANCE(fmu, c);
+  if (nvr > 0 && (vr == NULL || value == NULL))
+    return fmu_error(fmu, "fmi2SetReal: nvr > 0 but vr or value is NULL");
   for (i = 0; i < nvr; ++i) {
-    if (!isfinite(value[i])) return fmu_error(fmu, "fmi2SetReal: the value is not finite");
+    /* The inverse's target may be anything: a non-finite or overflowing one gives the extreme
+       input in its direction, NaN holds the last input (the C export's inverse step). */
+    const int target = FMU_INVERSE && vr[i] == FMU_INPUT;
+    if (!target && !isfinite(value[i])) return fmu_error(fmu, "fmi2SetReal: the value is not finite");
     if (vr[i] == FMU_INPUT) {
-      if (fmu->mode == fmu_terminated || fmu->mode == fmu_failed)
+      if (fmu->now.mode == fmu_terminated || fmu->now.mode == fmu_failed)
         return fmu_error(fmu, "fmi2SetReal: the FMU is terminated");
+      if (target && !(fabs(value[i]) <= 1e300))
+        status = fmu_warning(fmu, value[i] != value[i]
+                                      ? "fmi2SetReal: the target is NaN: the input is held"
+                                      : "fmi2SetReal: the target is not finite or beyond 1e300: "
+                                        "the input is the extreme one in its direction");
       fmu->now.input = value[i];
     } else if (vr[i] - FMU_FIRST_PARAMETER < FMU_PARAMETERS && vr[i] >= FMU_FIRST_PARAMETER) {
-      if (fmu->mode != fmu_instantiated && fmu->mode != fmu_initialization)
+      if (fmu->now.mode != fmu_instantiated && fmu->now.mode != fmu_initialization)
         return fmu_error(fmu, "fmi2SetReal: a fixed parameter is set only before the end of "
                               "initialisation");
       *fmu_parameter(&fmu->params, vr[i] - FMU_FIRST_PARAMETER) = (@_real)value[i];
@@ -252,11 +530,12 @@ FMU_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[]
     }
     fmu->now.output_valid = 0;
   }
-  return fmi2OK;
+  return status;
 }
 
 static fmi2Status fmu_no_variables(fmi2Component c, size_t nvr, const char *message) {
-  return nvr == 0 ? fmi2OK : fmu_error((fmu_instance *)c, message);
+  FMU_INSTANCE(fmu, c);
+  return nvr == 0 ? fmi2OK : fmu_error(fmu, message);
 }
 
 FMU_EXPORT fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -301,72 +580,119 @@ FMU_EXPORT fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr
   return fmu_no_variables(c, nvr, "fmi2SetString: this FMU has no String variable");
 }
 
+/* The saved state: the instance's snapshot with its parameters, sealed by its checksum. */
 FMU_EXPORT fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  fmu_snapshot *saved = (fmu_snapshot *)*FMUstate;
-  size_t k;
-  if (saved == NULL) {
-    saved = (fmu_snapshot *)fmu->allocate(1, sizeof(fmu_snapshot));
-    if (saved == NULL) return fmu_error(fmu, "fmi2GetFMUstate: out of memory");
-  }
-  *saved = fmu->now;
-  for (k = 0; k < FMU_PARAMETERS; ++k) saved->parameters[k] = (fmi2Real)*fmu_parameter(&fmu->params, k);
+  fmu_saved *saved;
+  FMU_INSTANCE(fmu, c);
+  if (FMUstate == NULL) return fmu_error(fmu, "fmi2GetFMUstate: FMUstate is NULL");
+  saved = fmu_saved_live(*FMUstate);
+  if (*FMUstate != NULL && saved == NULL)
+    return fmu_error(fmu, "fmi2GetFMUstate: *FMUstate is neither NULL nor a live state of this "
+                          "FMU");
+  if (saved == NULL) saved = fmu_saved_new(fmu);
+  if (saved == NULL) return fmu_error(fmu, "fmi2GetFMUstate: out of memory");
+  memcpy(&saved->snapshot, &fmu->now, sizeof(fmu_snapshot));
+  fmu_parameter_values(fmu, saved->snapshot.parameters);
+  saved->snapshot.checksum = fmu_checksum(&saved->snapshot);
   *FMUstate = saved;
   return fmi2OK;
 }
 
+/* Logs `problem` of a state for `function`; fmi2Error. */
+static fmi2Status fmu_refuse_state(fmu_instance *fmu, const char *function, const char *problem) {
+  if (fmu->logger != NULL)
+    fmu->logger(fmu->environment, fmu->name, fmi2Error, "logStatusError", "%s: %s", function,
+                problem);
+  return fmi2Error;
+}
+
 FMU_EXPORT fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  const fmu_snapshot *saved = (const fmu_snapshot *)FMUstate;
+  const fmu_saved *saved;
+  const char *problem;
   size_t k;
-  if (saved == NULL || saved->magic != FMU_STATE_MAGIC)
-    return fmu_error(fmu, "fmi2SetFMUstate: not a state of this FMU");
-  fmu->now = *saved;
-  for (k = 0; k < FMU_PARAMETERS; ++k) *fmu_parameter(&fmu->params, k) = (@_real)saved->parameters[k];
+  FMU_INSTANCE(fmu, c);
+  saved = fmu_saved_live(FMUstate);
+  if (saved == NULL)
+    return fmu_error(fmu, "fmi2SetFMUstate: FMUstate is not a live state of this FMU");
+  problem = fmu_snapshot_problem(&saved->snapshot);
+  if (problem != NULL) return fmu_refuse_state(fmu, "fmi2SetFMUstate", problem);
+  if (!fmu_parameters_valid(fmu, "fmi2SetFMUstate", fmu_value_of_array,
+                            saved->snapshot.parameters))
+    return fmi2Error;
+  memcpy(&fmu->now, &saved->snapshot, sizeof(fmu_snapshot));
+  for (k = 0; k < FMU_PARAMETERS; ++k)
+    *fmu_parameter(&fmu->params, k) = (@_real)saved->snapshot.parameters[k];
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  if (FMUstate == NULL) return fmi2OK;
-  fmu->release(*FMUstate);
+  FMU_INSTANCE(fmu, c);
+  if (FMUstate == NULL || *FMUstate == NULL) return fmi2OK;
+  if (!fmu_saved_free(*FMUstate))
+    return fmu_error(fmu, "fmi2FreeFMUstate: not a live state of this FMU (freed before?)");
   *FMUstate = NULL;
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate,
                                                  size_t *size) {
-  (void)c;
-  (void)FMUstate;
+  FMU_INSTANCE(fmu, c);
+  if (size == NULL) return fmu_error(fmu, "fmi2SerializedFMUstateSize: size is NULL");
+  if (fmu_saved_live(FMUstate) == NULL)
+    return fmu_error(fmu, "fmi2SerializedFMUstateSize: FMUstate is not a live state of this FMU");
   *size = sizeof(fmu_snapshot);
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
                                             fmi2Byte serializedState[], size_t size) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  if (FMUstate == NULL || size < sizeof(fmu_snapshot))
-    return fmu_error(fmu, "fmi2SerializeFMUstate: no state, or a buffer too small for it");
-  memcpy(serializedState, FMUstate, sizeof(fmu_snapshot));
+  const fmu_saved *saved;
+  const char *problem;
+  FMU_INSTANCE(fmu, c);
+  saved = fmu_saved_live(FMUstate);
+  if (saved == NULL)
+    return fmu_error(fmu, "fmi2SerializeFMUstate: FMUstate is not a live state of this FMU");
+  if (serializedState == NULL || size < sizeof(fmu_snapshot))
+    return fmu_error(fmu, "fmi2SerializeFMUstate: no buffer, or a buffer too small");
+  problem = fmu_snapshot_problem(&saved->snapshot);
+  if (problem != NULL) return fmu_refuse_state(fmu, "fmi2SerializeFMUstate", problem);
+  memcpy(serializedState, &saved->snapshot, sizeof(fmu_snapshot));
   return fmi2OK;
 }
 
+/* The bytes are copied into a state of our own and checked there (checksum, mode, finite
+   values, the memory's bounds, the parameters' rules) before the host gets it. */
 FMU_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
                                               size_t size, fmi2FMUstate *FMUstate) {
-  fmu_instance *fmu = (fmu_instance *)c;
-  fmu_snapshot *saved = (fmu_snapshot *)*FMUstate;
-  unsigned long long magic;
+  fmu_saved *saved;
+  fmu_saved *fresh;
+  const char *problem;
+  FMU_INSTANCE(fmu, c);
+  if (serializedState == NULL || FMUstate == NULL)
+    return fmu_error(fmu, "fmi2DeSerializeFMUstate: serializedState or FMUstate is NULL");
   if (size != sizeof(fmu_snapshot))
     return fmu_error(fmu, "fmi2DeSerializeFMUstate: the size is not that of this FMU's state");
-  memcpy(&magic, serializedState, sizeof magic);
-  if (magic != FMU_STATE_MAGIC)
-    return fmu_error(fmu, "fmi2DeSerializeFMUstate: the bytes are not a state of this FMU");
-  if (saved == NULL) {
-    saved = (fmu_snapshot *)fmu->allocate(1, sizeof(fmu_snapshot));
-    if (saved == NULL) return fmu_error(fmu, "fmi2DeSerializeFMUstate: out of memory");
+  saved = fmu_saved_live(*FMUstate);
+  if (*FMUstate != NULL && saved == NULL)
+    return fmu_error(fmu, "fmi2DeSerializeFMUstate: *FMUstate is neither NULL nor a live state "
+                          "of this FMU");
+  fresh = fmu_saved_new(fmu);
+  if (fresh == NULL) return fmu_error(fmu, "fmi2DeSerializeFMUstate: out of memory");
+  memcpy(&fresh->snapshot, serializedState, sizeof(fmu_snapshot));
+  problem = fmu_snapshot_problem(&fresh->snapshot);
+  if (problem == NULL && !fmu_parameters_valid(fmu, "fmi2DeSerializeFMUstate", fmu_value_of_array,
+                                               fresh->snapshot.parameters))
+    problem = "the state's parameters break the model's rules";
+  if (problem != NULL) {
+    fmu_saved_free(fresh);
+    return fmu_refuse_state(fmu, "fmi2DeSerializeFMUstate", problem);
   }
-  memcpy(saved, serializedState, sizeof(fmu_snapshot));
-  *FMUstate = saved;
+  if (saved != NULL) {
+    memcpy(&saved->snapshot, &fresh->snapshot, sizeof(fmu_snapshot));
+    fmu_saved_free(fresh);
+  } else {
+    *FMUstate = fresh;
+  }
   return fmi2OK;
 }
 
@@ -377,10 +703,13 @@ FMU_EXPORT fmi2Status fmi2GetDirectionalDerivative(fmi2Component c,
                                                    const fmi2ValueReference vKnown_ref[],
                                                    size_t nKnown, const fmi2Real dvKnown[],
                                                    fmi2Real dvUnknown[]) {
-  fmu_instance *fmu = (fmu_instance *)c;
   fmi2Real seed = 0.0;
   fmi2Real derivative = 0.0;
   size_t i;
+  FMU_INSTANCE(fmu, c);
+  if ((nKnown > 0 && (vKnown_ref == NULL || dvKnown == NULL)) ||
+      (nUnknown > 0 && (vUnknown_ref == NULL || dvUnknown == NULL)))
+    return fmu_error(fmu, "fmi2GetDirectionalDerivative: a count > 0 with a NULL array");
   for (i = 0; i < nKnown; ++i) {
     if (vKnown_ref[i] != FMU_INPUT)
       return fmu_error(fmu, "fmi2GetDirectionalDerivative: the known variable must be the input");
@@ -392,6 +721,8 @@ FMU_EXPORT fmi2Status fmi2GetDirectionalDerivative(fmi2Component c,
   }
   if (!isfinite(seed))
     return fmu_error(fmu, "fmi2GetDirectionalDerivative: the seed is not finite");
+  if (!isfinite(fmu->now.input))
+    return fmu_error(fmu, "fmi2GetDirectionalDerivative: the input is not finite");
   if (seed != 0.0) {
     const @_real input = (@_real)fmu->now.input;
     const @_real step = (@_real)(FMU_DIFFERENCE_STEP * (1.0 + fabs(fmu->now.input)));
@@ -429,11 +760,11 @@ FMU_EXPORT fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2Va
 FMU_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                                  fmi2Real communicationStepSize,
                                  fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
-  fmu_instance *fmu = (fmu_instance *)c;
   const fmi2Real t = currentCommunicationPoint;
   const fmi2Real h = communicationStepSize;
+  FMU_INSTANCE(fmu, c);
   (void)noSetFMUStatePriorToCurrentPoint;
-  if (fmu->mode != fmu_stepping)
+  if (fmu->now.mode != fmu_stepping)
     return fmu_error(fmu, "fmi2DoStep: only after fmi2ExitInitializationMode");
   if (!(h > 0.0) || !isfinite(h) || !isfinite(t))
     return fmu_error(fmu, "fmi2DoStep: the step size must be positive and finite");
@@ -443,26 +774,29 @@ FMU_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationP
     return fmu_error(fmu, "fmi2DoStep: the step size must be the model's sample time "
                           "(%SAMPLE_TIME% s)");
   fmu_evaluate(fmu);
-  fmu->now.state = fmu->now.sample;
+  memcpy(&fmu->now.state, &fmu->now.sample, sizeof(fmu_state));
   fmu->now.output_valid = 0;
   fmu->now.time = t + h;
   return fmi2OK;
 }
 
 FMU_EXPORT fmi2Status fmi2CancelStep(fmi2Component c) {
-  return fmu_error((fmu_instance *)c, "fmi2CancelStep: fmi2DoStep never runs asynchronously");
+  FMU_INSTANCE(fmu, c);
+  return fmu_error(fmu, "fmi2CancelStep: fmi2DoStep never runs asynchronously");
 }
 
 FMU_EXPORT fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
-  (void)c;
+  FMU_INSTANCE(fmu, c);
   (void)s;
+  if (value == NULL) return fmu_error(fmu, "fmi2GetStatus: value is NULL");
   *value = fmi2OK;
   return fmi2Discard;
 }
 
 FMU_EXPORT fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
                                         fmi2Real *value) {
-  fmu_instance *fmu = (fmu_instance *)c;
+  FMU_INSTANCE(fmu, c);
+  if (value == NULL) return fmu_error(fmu, "fmi2GetRealStatus: value is NULL");
   if (s != fmi2LastSuccessfulTime) return fmi2Discard;
   *value = fmu->now.time;
   return fmi2OK;
@@ -470,7 +804,8 @@ FMU_EXPORT fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
 
 FMU_EXPORT fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s,
                                            fmi2Integer *value) {
-  (void)c;
+  FMU_INSTANCE(fmu, c);
+  (void)fmu;
   (void)s;
   (void)value;
   return fmi2Discard;
@@ -478,7 +813,8 @@ FMU_EXPORT fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind
 
 FMU_EXPORT fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
                                            fmi2Boolean *value) {
-  (void)c;
+  FMU_INSTANCE(fmu, c);
+  if (value == NULL) return fmu_error(fmu, "fmi2GetBooleanStatus: value is NULL");
   if (s != fmi2Terminated) return fmi2Discard;
   *value = fmi2False;
   return fmi2OK;
@@ -486,7 +822,8 @@ FMU_EXPORT fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind
 
 FMU_EXPORT fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s,
                                           fmi2String *value) {
-  (void)c;
+  FMU_INSTANCE(fmu, c);
+  (void)fmu;
   (void)s;
   (void)value;
   return fmi2Discard;
@@ -634,6 +971,32 @@ std::string parameter_offsets(const FmuUnit& unit) {
   return text + "\n    0u\n";
 }
 
+// The FMU's name of every exposed element ("thresholds[2]", "offset"), its rule (as the
+// wrapper's numbers, CRule's order) and whether it starts its field, as C initialisers.
+struct ParameterTables {
+  std::string names;
+  std::string rules;
+  std::string starts;
+};
+
+// The wrapper's fmu_rule_* numbers are CRule's, in its order: a new rule needs both.
+static_assert(static_cast<int>(CRule::upper_limit) == 11, "the wrapper numbers 12 rules");
+
+ParameterTables parameter_tables(const FmuUnit& unit) {
+  ParameterTables tables;
+  for (const auto& field : unit.parameters()) {
+    for (std::size_t k = 0; k < field.values.size(); ++k) {
+      tables.names += fmt::format("\n    \"{}\",", fmu_variable_name(field, k));
+      tables.rules += fmt::format("{}u, ", static_cast<unsigned>(field.rule));
+      tables.starts += k == 0 ? "1u, " : "0u, ";
+    }
+  }
+  tables.names += "\n    \"\"\n";
+  tables.rules += "0u";
+  tables.starts += "0u";
+  return tables;
+}
+
 std::size_t parameter_count(const FmuUnit& unit) {
   std::size_t count = 0;
   for (const auto& field : unit.parameters())
@@ -650,6 +1013,7 @@ std::string_view fmi2_declarations() {
 std::string fmu_wrapper(const FmuUnit& unit) {
   const CWriter writer(unit.c_prefix,
                        unit.single ? CScalar::single_precision : CScalar::double_precision);
+  const ParameterTables tables = parameter_tables(unit);
   const std::string text = CWriter::fill(
       kWrapper,
       {{"FILE", unit.wrapper_name()},
@@ -662,6 +1026,11 @@ std::string fmu_wrapper(const FmuUnit& unit) {
        {"PARAMS_TYPE", unit.inverse ? "@_inverse_params" : "@_params"},
        {"STATE_TYPE", unit.inverse ? "@_inverse_state" : "@_state"},
        {"OFFSETS", parameter_offsets(unit)},
+       {"NAMES", tables.names},
+       {"RULES", tables.rules},
+       {"STARTS", tables.starts},
+       {"INVERSE", unit.inverse ? "1" : "0"},
+       {"STATE_CHECK", unit.inverse ? unit.code->inverse_state_check : unit.code->state_check},
        {"PARAMS_VALUE", unit.inverse ? "@_INVERSE_PARAMS" : "@_PARAMS"},
        {"INIT", unit.inverse ? "@_inverse_init" : "@_init"},
        {"INPUT_START", "0.0"},

@@ -1485,6 +1485,63 @@ case_export_fmu() {
   expect_no_temporaries
 }
 
+# An FMU export killed while its compiler runs (SIGINT, SIGTERM, SIGKILL) leaves no scratch folder
+# (hyst-fmu-* in TMPDIR) and no compiler: the compiler here is a script that stays busy (a sleep
+# of its own) until it is killed.
+case_export_fmu_killed() {
+  write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
+  cat >slow-cc <<'SH'
+#!/usr/bin/env bash
+echo $$ >>"$CC_PIDS"
+sleep 60 &
+echo $! >>"$CC_PIDS"
+wait
+SH
+  chmod +x slow-cc
+  local signal scratch pids pid tries alive left
+  for signal in INT TERM KILL; do
+    scratch="$WORK/tmp-$signal"
+    pids="$WORK/compiler-$signal"
+    mkdir "$scratch"
+    : >"$pids"
+    # Job control: a background job of a script ignores SIGINT otherwise.
+    set -m
+    CC_PIDS="$pids" TMPDIR="$scratch" "$HYST" export --model known.json --lang fmu \
+      --out "fmus-$signal" --cc "$WORK/slow-cc" >/dev/null 2>&1 &
+    pid=$!
+    set +m
+    tries=0
+    until [ "$(wc -l <"$pids")" -ge 2 ]; do
+      tries=$((tries + 1))
+      [ "$tries" -lt 400 ] || { kill -KILL "$pid"; fail "SIG$signal: the compiler did not start"; return; }
+      sleep 0.05
+    done
+    [ -n "$(find "$scratch" -maxdepth 1 -name 'hyst-fmu-*')" ] ||
+      fail "SIG$signal: no hyst-fmu-* scratch folder while the compiler runs"
+    kill -"$signal" "$pid"
+    wait "$pid" 2>/dev/null
+    # The guard cleans up as the exporter dies: give it a moment (at most 5 s).
+    tries=0
+    while :; do
+      alive=""
+      while read -r compiler; do
+        kill -0 "$compiler" 2>/dev/null && alive="$alive $compiler"
+      done <"$pids"
+      left="$(find "$scratch" -mindepth 1)"
+      [ -z "$alive" ] && [ -z "$left" ] && break
+      tries=$((tries + 1))
+      if [ "$tries" -ge 100 ]; then
+        fail "SIG$signal: after the export was killed, compiler processes still run:$alive;" \
+          "left in TMPDIR: $left"
+        while read -r compiler; do kill -KILL "$compiler" 2>/dev/null; done <"$pids"
+        break
+      fi
+      sleep 0.05
+    done
+    [ ! -e "fmus-$signal" ] || fail "SIG$signal: the killed export wrote $(ls "fmus-$signal")"
+  done
+}
+
 case_export_c() {
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0.1
   write_input_csv in.csv

@@ -342,6 +342,107 @@ TEST_F(ExportCTest, BoucWenRk4AndExactSolution) {
   check_everything({exact, -3.0, 3.0}, kFloatBound);
 }
 
+// Every exported inverse, in double and float, with and without input limits: +-inf and +-1e308
+// give the limits (a finite input without them), never NaN; a NaN target holds the last input.
+// Compiles a driver of the inverse exported as "odd" into `dir` and returns its answers to the
+// targets 0.1, 1e308, 0.2, +inf, 0.1, -inf, 0.15, -1e308, 0.05, NaN (in this order).
+std::vector<double> odd_inverse_answers(const std::filesystem::path& dir) {
+  const std::string driver = R"(#include <math.h>
+#include <stdio.h>
+#include "odd.h"
+int main(void) {
+  const double targets[] = {0.1, 1e308, 0.2, HUGE_VAL, 0.1, -HUGE_VAL, 0.15, -1e308, 0.05, NAN};
+  odd_inverse_state state;
+  unsigned int k;
+  odd_inverse_init(&state);
+  for (k = 0; k < sizeof targets / sizeof targets[0]; ++k)
+    printf("%.17g\n", (double)odd_inverse_step(&odd_INVERSE_PARAMS, &state, (odd_real)targets[k]));
+  return 0;
+}
+)";
+  std::ofstream(dir / "odd_driver.c") << driver;
+  std::string log;
+  if (test::run_command(
+          fmt::format("cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -o odd "
+                      "odd_driver.c odd.c -lm 2>&1",
+                      dir.string()),
+          &log) != 0) {
+    ADD_FAILURE() << log;
+    return {};
+  }
+  std::string printed;
+  EXPECT_EQ(test::run_command(fmt::format("cd '{}' && ./odd", dir.string()), &printed), 0);
+  return numbers_in(printed);
+}
+
+class ExportCInverseTest : public ExportCTest, public testing::WithParamInterface<std::string> {};
+
+TEST_P(ExportCInverseTest, NonFiniteTargetsGiveTheLimitsOrTheHeldInput) {
+  const std::string name = GetParam();
+  const auto model = model_from_json(example_document(name), "test.json");
+  for (const CScalar scalar : {CScalar::double_precision, CScalar::single_precision}) {
+    for (const bool limited : {true, false}) {
+      CExportOptions options;
+      options.prefix = "odd";
+      options.scalar = scalar;
+      if (limited) options.limits = {-0.5, 0.5};
+      const CCode code = export_c(*model, dir_, options);
+      ASSERT_TRUE(code.has_inverse) << name;
+      const auto inputs = odd_inverse_answers(dir_);
+      const std::string what =
+          fmt::format("{} ({}, {})", name, scalar == CScalar::single_precision ? "float" : "double",
+                      limited ? "limits [-0.5, 0.5]" : "no limits");
+      ASSERT_EQ(inputs.size(), 10U) << what;
+      for (std::size_t k = 0; k < inputs.size(); ++k)
+        EXPECT_TRUE(std::isfinite(inputs[k])) << what << ": target " << k << " gave " << inputs[k];
+      if (limited) {
+        EXPECT_EQ(inputs[1], 0.5) << what << ": 1e308";
+        EXPECT_EQ(inputs[3], 0.5) << what << ": +inf";
+        EXPECT_EQ(inputs[5], -0.5) << what << ": -inf";
+        EXPECT_EQ(inputs[7], -0.5) << what << ": -1e308";
+      }
+      EXPECT_EQ(inputs[9], inputs[8]) << what << ": NaN holds the last input";
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryModelWithAnInverse, ExportCInverseTest,
+                         testing::Values("pi", "modified_pi", "gpi", "preisach", "pi_creep",
+                                         "modified_pi_creep"));
+
+// Inverse weights near the library's limit (ph = 1e300, -5e299): the bound of the targets scales
+// with them, so that +-inf and 1e308 still give the limit of their direction. A fixed bound of
+// 1e150 gave -0.5 for +inf and 1e308 here (1e300 * 1e150 - 5e299 * 1e150 = inf - inf = NaN, which
+// the clamp answers with input_min).
+TEST_F(ExportCTest, HugeInverseWeightsStillBoundTheTargets) {
+  const auto model = model_from_json(
+      model_document("pi", {{"thresholds", {0.0, 0.3}}, {"weights", {1e-300, 1e-300}}}),
+      "test.json");
+  CExportOptions options;
+  options.prefix = "odd";
+  options.limits = {-0.5, 0.5};
+  export_c(*model, dir_, options);
+  const auto inputs = odd_inverse_answers(dir_);
+  ASSERT_EQ(inputs.size(), 10U);
+  EXPECT_EQ(inputs[1], 0.5) << "1e308";
+  EXPECT_EQ(inputs[3], 0.5) << "+inf";
+  EXPECT_EQ(inputs[5], -0.5) << "-inf";
+  EXPECT_EQ(inputs[7], -0.5) << "-1e308";
+  EXPECT_EQ(inputs[9], inputs[8]) << "NaN";
+}
+
+// The list above is every exported model with an inverse.
+TEST_F(ExportCTest, EveryExportedInverseIsCheckedWithNonFiniteTargets) {
+  std::set<std::string> with_inverse;
+  for (const auto& entry : ModelRegistry::builtin().entries()) {
+    if (entry.can_export_c() &&
+        generate_c(*model_from_json(example_document(entry.name), "test.json"), {}).has_inverse)
+      with_inverse.insert(entry.name);
+  }
+  EXPECT_EQ(with_inverse, (std::set<std::string>{"pi", "modified_pi", "gpi", "preisach", "pi_creep",
+                                                 "modified_pi_creep"}));
+}
+
 TEST_F(ExportCTest, NmListsTheMathFunctionsTheCodeCalls) {
   // The symbol check of check_everything() reads nm's listing: it does see the calls there are.
   const Case c{example_document("gpi")};

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +51,14 @@ template <class F>
 void resolve(void* library, const char* name, F& function) {
   function = reinterpret_cast<F>(::dlsym(library, name));
   if (function == nullptr) throw std::runtime_error(fmt::format("the binary lacks {}", name));
+}
+
+// The lexical form of xs:double (XML Schema part 2, 3.2.5): a decimal with an optional exponent,
+// INF, -INF or NaN; "inf", "nan" or "1e" are not one.
+bool is_xs_double(const char* text) {
+  static const std::regex form(
+      R"(\s*((\+|-)?([0-9]+(\.[0-9]*)?|\.[0-9]+)([Ee](\+|-)?[0-9]+)?|(\+|-)?INF|NaN)\s*)");
+  return std::regex_match(text, form);
 }
 
 bool one_of(const std::string& value, std::initializer_list<const char*> allowed) {
@@ -106,6 +115,10 @@ Fmu::Fmu(const std::filesystem::path& file, const std::filesystem::path& folder)
   resolve(library_, "fmi2GetDirectionalDerivative", f.get_directional_derivative);
   resolve(library_, "fmi2DoStep", f.do_step);
   resolve(library_, "fmi2GetRealStatus", f.get_real_status);
+  resolve(library_, "fmi2GetStatus", f.get_status);
+  resolve(library_, "fmi2GetBooleanStatus", f.get_boolean_status);
+  resolve(library_, "fmi2SetDebugLogging", f.set_debug_logging);
+  resolve(library_, "fmi2CancelStep", f.cancel_step);
   // The rest of the co-simulation interface must be there too, even where unused here.
   for (const char* name :
        {"fmi2SetDebugLogging", "fmi2GetBoolean", "fmi2GetString", "fmi2SetInteger",
@@ -138,6 +151,12 @@ std::vector<std::string> Fmu::description_problems() const {
     problems.push_back("fmiVersion is not 2.0");
   if (guid_.empty()) problems.push_back("no guid");
   if (std::string(root.attribute("modelName").value()).empty()) problems.push_back("no modelName");
+  for (const char* attribute : {"startTime", "stopTime", "tolerance", "stepSize"}) {
+    const auto value = root.child("DefaultExperiment").attribute(attribute);
+    if (!value.empty() && !is_xs_double(value.value()))
+      problems.push_back(
+          fmt::format("DefaultExperiment {} '{}' is not an xs:double", attribute, value.value()));
+  }
   const auto co_simulation = root.child("CoSimulation");
   if (!co_simulation) problems.push_back("no CoSimulation element");
   if (identifier_.empty()) problems.push_back("no modelIdentifier");
@@ -201,12 +220,13 @@ std::vector<std::string> Fmu::description_problems() const {
       problems.push_back(fmt::format("'{}': an input has no initial attribute", name));
     if (initial == "calculated" && has_start)
       problems.push_back(fmt::format("'{}': a calculated variable has no start value", name));
-    if (has_start && type == "Real") {
-      char* end = nullptr;
-      const char* text = typed.attribute("start").value();
-      std::strtod(text, &end);
-      if (end == text || *end != '\0')
-        problems.push_back(fmt::format("'{}': start '{}' is not a number", name, text));
+    if (type == "Real") {
+      for (const char* attribute : {"start", "min", "max", "nominal"}) {
+        const auto value = typed.attribute(attribute);
+        if (!value.empty() && !is_xs_double(value.value()))
+          problems.push_back(
+              fmt::format("'{}': {} '{}' is not an xs:double", name, attribute, value.value()));
+      }
     }
     const std::string unit = typed.attribute("unit").value();
     if (!unit.empty() && units.count(unit) == 0)
@@ -240,26 +260,26 @@ std::vector<std::string> Fmu::description_problems() const {
   return problems;
 }
 
-void FmuInstance::logger(fmi2::ComponentEnvironment environment, fmi2::String instance,
+void FmuInstance::log_to(fmi2::ComponentEnvironment environment, fmi2::String instance,
                          fmi2::Status status, fmi2::String category, fmi2::String message, ...) {
-  auto* self = static_cast<FmuInstance*>(environment);
+  auto* log = static_cast<Log*>(environment);
   char buffer[2048];
   va_list arguments;
   va_start(arguments, message);
   std::vsnprintf(buffer, sizeof buffer, message, arguments);
   va_end(arguments);
-  self->log_ += fmt::format("[{}] status {} ({}): {}\n", instance, static_cast<int>(status),
-                            category, buffer);
+  log->text += fmt::format("[{}] status {} ({}): {}\n", instance, static_cast<int>(status),
+                           category, buffer);
 }
 
 FmuInstance::FmuInstance(const Fmu& fmu, const std::string& guid,
                          const std::vector<std::pair<fmi2::ValueReference, double>>& parameters)
-    : fmu_(fmu), callbacks_{&FmuInstance::logger, std::calloc, std::free, nullptr, this} {
+    : fmu_(fmu), callbacks_{&FmuInstance::log_to, std::calloc, std::free, nullptr, &log_} {
   const auto& f = fmu.functions();
   component_ =
       f.instantiate("test", fmi2::CoSimulation, guid.empty() ? fmu.guid().c_str() : guid.c_str(),
                     "", &callbacks_, 0, 0);
-  if (component_ == nullptr) throw std::runtime_error("fmi2Instantiate failed: " + log_);
+  if (component_ == nullptr) throw std::runtime_error("fmi2Instantiate failed: " + log_.text);
   bool ok = f.setup_experiment(component_, 0, 0.0, 0.0, 0, 0.0) == fmi2::OK &&
             f.enter_initialization_mode(component_) == fmi2::OK;
   for (const auto& [reference, value] : parameters)
@@ -267,7 +287,7 @@ FmuInstance::FmuInstance(const Fmu& fmu, const std::string& guid,
   ok = ok && f.exit_initialization_mode(component_) == fmi2::OK;
   if (!ok) {
     f.free_instance(component_);
-    throw std::runtime_error("initialisation failed: " + log_);
+    throw std::runtime_error("initialisation failed: " + log_.text);
   }
 }
 
@@ -284,7 +304,7 @@ double FmuInstance::sample(double input, double h) {
   if (f.set_real(component_, &in, 1, &input) != fmi2::OK ||
       f.get_real(component_, &out, 1, &output) != fmi2::OK ||
       f.do_step(component_, time_, h, 1) != fmi2::OK) {
-    throw std::runtime_error("a sample failed: " + log_);
+    throw std::runtime_error("a sample failed: " + log_.text);
   }
   time_ += h;
   return output;
@@ -293,12 +313,18 @@ double FmuInstance::sample(double input, double h) {
 double FmuInstance::get(fmi2::ValueReference reference) const {
   double value = 0.0;
   if (fmu_.functions().get_real(component_, &reference, 1, &value) != fmi2::OK)
-    throw std::runtime_error("fmi2GetReal failed: " + log_);
+    throw std::runtime_error("fmi2GetReal failed: " + log_.text);
   return value;
 }
 
 fmi2::Status FmuInstance::set(fmi2::ValueReference reference, double value) {
   return fmu_.functions().set_real(component_, &reference, 1, &value);
+}
+
+fmi2::Status FmuInstance::step(double h) {
+  const fmi2::Status status = fmu_.functions().do_step(component_, time_, h, 1);
+  if (status == fmi2::OK) time_ += h;
+  return status;
 }
 
 }  // namespace hyst::test

@@ -60,6 +60,10 @@ struct Functions {
                                        const ValueReference*, std::size_t, const Real*, Real*);
   Status (*do_step)(Component, Real, Real, Boolean);
   Status (*get_real_status)(Component, int, Real*);
+  Status (*get_status)(Component, int, Status*);
+  Status (*get_boolean_status)(Component, int, Boolean*);
+  Status (*set_debug_logging)(Component, Boolean, std::size_t, const String*);
+  Status (*cancel_step)(Component);
 };
 }  // namespace fmi2
 
@@ -119,22 +123,29 @@ class FmuInstance {
   fmi2::Component component() const { return component_; }
   const fmi2::Functions& call() const { return fmu_.functions(); }
   // The messages the FMU logged, joined by newlines.
-  const std::string& log() const { return log_; }
+  const std::string& log() const { return log_.text; }
 
   // set input, read output, step by h: the output for `input` at the current point.
   double sample(double input, double h);
   double get(fmi2::ValueReference reference) const;
   fmi2::Status set(fmi2::ValueReference reference, double value);
+  // fmi2DoStep from the current point by h; the time moves on when it succeeds.
+  fmi2::Status step(double h);
   double time() const { return time_; }
 
-  static void logger(fmi2::ComponentEnvironment environment, fmi2::String instance,
+  // What a logger collects: every message, one line each.
+  struct Log {
+    std::string text;
+  };
+  // A logger callback for any instance whose component environment is a Log.
+  static void log_to(fmi2::ComponentEnvironment environment, fmi2::String instance,
                      fmi2::Status status, fmi2::String category, fmi2::String message, ...);
 
  private:
   const Fmu& fmu_;
+  Log log_;
   fmi2::CallbackFunctions callbacks_;
   fmi2::Component component_ = nullptr;
-  std::string log_;
   double time_ = 0.0;
 };
 

@@ -34,6 +34,24 @@ enum class CUnit : unsigned char {
   input_per_output,  //!< [input units / output units]
 };
 
+//! What a wrapper that lets a user change an exported parameter (an FMU) checks before using it:
+//! the rule of the library's own validation of that field, element by element. Every value must
+//! also be finite, except where the rule says otherwise.
+enum class CRule : unsigned char {
+  finite,                 //!< any finite value
+  increasing_from_zero,   //!< element 0 is 0, each later one > the one before (play thresholds)
+  increasing,             //!< each element > the one before (levels, dead-zone thresholds)
+  partial_sums_positive,  //!< element 0 > 0 and every partial sum > 0 (invertible weights)
+  positive,               //!< > 0
+  nonnegative,            //!< >= 0
+  at_least_one,           //!< >= 1
+  unit_interval,          //!< 0 <= value <= 1
+  open_unit_interval,     //!< 0 < value < 1 (a lag's decay per sample)
+  within_previous,  //!< previous + value > 0 and previous - value >= 0 (Bouc-Wen's gamma of beta)
+  lower_limit,      //!< may be -inf, never NaN, <= the value of the next element (the upper limit)
+  upper_limit,      //!< may be +inf, never NaN
+};
+
 //! One field of the exported parameter struct (<prefix>_params or <prefix>_inverse_params) that a
 //! wrapper may expose for tuning (an FMU's parameters): a real scalar or an array of reals. Fields
 //! derived from others (tables a step needs to be fast) and integer fields are not listed.
@@ -43,6 +61,7 @@ struct CParameterField {
   bool array = false;          //!< declared as an array (even with one element)
   CUnit unit = CUnit::none;
   std::string description;  //!< one line, e.g. "play thresholds r_j"
+  CRule rule = CRule::finite;
 };
 
 //! The generated code, in memory.
@@ -58,6 +77,10 @@ struct CCode {
   //! The sample time [s] a step assumes (the creep models' lags); 0 for a rate-independent model,
   //! whose step may follow any sample spacing.
   double sample_time = 0.0;
+  //! A C expression, true when the state `s` (a `const <prefix>_state *`) is one the step can
+  //! take: finite values, a memory within its bounds. A wrapper checks a restored state with it.
+  std::string state_check = "1";
+  std::string inverse_state_check = "1";  //!< the same for `const <prefix>_inverse_state *s`
 };
 
 }  // namespace hyst
