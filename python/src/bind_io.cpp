@@ -217,7 +217,9 @@ void bind_io(py::module_& module) {
            "Makes the staged files the published set, all names at once.")
       .def("discard", &PythonOutputSet::discard,
            "Removes the staging folder unless published; the previous set stays as it was.")
-      .def("__enter__", [](py::object self) { return self; })
+      .def(
+          "__enter__", [](PythonOutputSet& self) -> PythonOutputSet& { return self; },
+          py::return_value_policy::reference)
       .def("__exit__", [](PythonOutputSet& self, const py::args&) { self.discard(); });
 }
 
