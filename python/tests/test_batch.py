@@ -144,23 +144,28 @@ def test_the_serial_run_gives_the_same_rows(records, on_cluster, tmp_path):
     assert "in one process, serially" in (tmp_path / "batch.md").read_text()
 
 
-def test_a_worker_that_dies_fails_its_record_only(tmp_path):
-    write_records(tmp_path, 4)
-    hyst.io.write_csv(tmp_path / "zz_kills_its_worker.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
-
-    def kill_on_that_record():  # runs on the worker: that record's task ends its process
+def exit_on(record_suffix):
+    """A function for client.run: on the worker, the task of the record ending in
+    `record_suffix` ends the worker's process; the others run as usual."""
+    def patch():
         import os
         import time
         import hyst.batch
         run = hyst.batch._run_task
 
-        def run_or_die(task):
-            if not task.record.endswith("zz_kills_its_worker.csv"):
+        def run_or_exit(task):
+            if not task.record.endswith(record_suffix):
                 return run(task)
-            time.sleep(0.5)  # the worker reports the tasks it has finished before it dies
+            time.sleep(0.5)  # the worker reports the tasks it has finished before it goes
             os._exit(1)
 
-        hyst.batch._run_task = run_or_die
+        hyst.batch._run_task = run_or_exit
+    return patch
+
+
+def test_a_worker_that_dies_fails_its_record_only(tmp_path):
+    write_records(tmp_path, 4)
+    hyst.io.write_csv(tmp_path / "zz_kills_its_worker.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
 
     # One worker runs the tasks in the order submitted, so the record submitted last dies alone;
     # with no retry, one death is its failure.
@@ -168,7 +173,7 @@ def test_a_worker_that_dies_fails_its_record_only(tmp_path):
             distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
                                      dashboard_address=":0") as cluster, \
             distributed.Client(cluster) as client:
-        client.run(kill_on_that_record)
+        client.run(exit_on("zz_kills_its_worker.csv"))
         rows = hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
                               out=tmp_path / "fits", client=client)
     assert [row.status for row in rows] == ["ok"] * 4 + ["failed"], rows
@@ -423,23 +428,8 @@ def test_a_record_over_its_time_limit_fails_and_its_worker_is_restarted(tmp_path
 def test_a_cluster_left_without_workers_ends_the_run_and_publishes_the_rows(tmp_path):
     write_records(tmp_path, 3)
     hyst.io.write_csv(tmp_path / "zz_last.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
-
-    def exit_on_the_last_record():
-        import os
-        import time
-        import hyst.batch
-        run = hyst.batch._run_task
-
-        def run_or_exit(task):
-            if not task.record.endswith("zz_last.csv"):
-                return run(task)
-            time.sleep(0.5)  # the worker reports the tasks it has finished before it goes
-            os._exit(1)
-
-        hyst.batch._run_task = run_or_exit
-
     with one_worker_cluster() as cluster, distributed.Client(cluster) as client:
-        client.run(exit_on_the_last_record)
+        client.run(exit_on("zz_last.csv"))
         for nanny in cluster.workers.values():
             nanny.close_gracefully()  # the worker that exits is not started again
         start = time.monotonic()
