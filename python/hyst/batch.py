@@ -62,6 +62,8 @@ MARKDOWN_TABLE = "batch.md"
 RECORD_TIMEOUT = 900.0
 #: How often the cluster's progress, time limits and workers are looked at [s].
 _POLL_SECONDS = 0.2
+#: How long an ended run waits for its cancelled tasks that still execute [s].
+_CANCEL_WAIT_SECONDS = 5.0
 
 Records = Union[str, "os.PathLike[str]", Sequence[Union[str, "os.PathLike[str]"]]]
 
@@ -335,11 +337,38 @@ def _end_overdue(client: Any, future: Any) -> None:
         client.restart_workers(stuck, timeout=10)
 
 
+def _known(keys: Sequence[str], dask_worker: Any) -> int:
+    """Runs on every worker: how many of the tasks `keys` it still holds (queued, executing, or
+    cancelled but still executing)."""
+    return sum(key in dask_worker.tasks for key in keys)
+
+
+def _known_to_scheduler(keys: Sequence[str], dask_scheduler: Any) -> int:
+    return sum(key in dask_scheduler.tasks for key in keys)
+
+
+def _wait_for_cancelled(client: Any, keys: Sequence[str]) -> None:
+    """A cancelled task runs on to its end (a thread cannot be stopped), and a worker may start
+    one before it hears of the cancel: waits (up to _CANCEL_WAIT_SECONDS) until the scheduler
+    has forgotten them and no worker holds them, twice in a row, so that none writes into the
+    staging folder while it is removed. Only for clusters this run does not close."""
+    deadline = time.monotonic() + _CANCEL_WAIT_SECONDS
+    quiet = 0
+    with contextlib.suppress(Exception):
+        while quiet < 2 and time.monotonic() < deadline:
+            busy = client.run_on_scheduler(_known_to_scheduler, list(keys)) or \
+                sum(client.run(_known, list(keys)).values())
+            quiet = 0 if busy else quiet + 1
+            time.sleep(0.05)
+
+
 def _run_on_cluster(client: Any, tasks: Sequence[_Task],
                     progress: Optional[Callable[[int, int, str], None]], record_timeout: float,
-                    worker_timeout: float) -> Tuple[List[RecordResult], str]:
+                    worker_timeout: float, stays: bool) -> Tuple[List[RecordResult], str]:
     """Runs the tasks; returns the rows in the tasks' order and, when the cluster was left
-    without workers for `worker_timeout` seconds, why the run ended early (else "")."""
+    without workers for `worker_timeout` seconds, why the run ended early (else ""). `stays`:
+    the cluster outlives the run (the caller's or a scheduler's), so that cancelled tasks that
+    still execute are waited for."""
     distributed = _distributed()
     started: Dict[int, float] = {}  # task index -> when its start was reported (this clock)
     client.subscribe_topic(tasks[0].topic,
@@ -394,6 +423,8 @@ def _run_on_cluster(client: Any, tasks: Sequence[_Task],
         if running:
             with contextlib.suppress(Exception):
                 client.cancel(list(running))
+            if stays:
+                _wait_for_cancelled(client, [future.key for future in running])
     for k in running.values():
         rows[k] = RecordResult(tasks[k].record, "failed", 0.0,
                                reason=f"{tasks[k].path}: not fitted: {lost}")
@@ -597,7 +628,8 @@ def _run(tasks: Sequence[_Task], client: Any, scheduler: Optional[str], workers:
         return rows, "", "in one process, serially", time.perf_counter() - start
     with _cluster(client, scheduler, workers, timeout) as running:
         _check_workers(running, timeout)
-        rows, lost = _run_on_cluster(running, tasks, callback, record_timeout, timeout)
+        rows, lost = _run_on_cluster(running, tasks, callback, record_timeout, timeout,
+                                     stays=client is not None or scheduler is not None)
         where = (f"on a local cluster of {workers} workers"
                  if client is None and scheduler is None
                  else f"on the Dask cluster at {running.scheduler.address}")

@@ -515,3 +515,24 @@ def test_an_interrupted_cluster_run_ends_at_once_with_one_line(previous_set, tmp
     assert stderr[-1].startswith("hyst: error: stopped by SIGINT; ")
     assert not any("Traceback" in line or "distributed." in line for line in stderr), stderr
     assert not (tmp_path / "fits").exists()  # the folder it created is removed again
+
+
+def test_an_interrupt_cancels_the_runs_tasks_on_the_callers_cluster(tmp_path):
+    write_records(tmp_path, 8)
+
+    def interrupt(done, total, record):  # as SIGINT would, after the first record
+        raise KeyboardInterrupt
+
+    with one_worker_cluster() as cluster, distributed.Client(cluster) as client:
+        with pytest.raises(KeyboardInterrupt):
+            hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
+                           out=tmp_path / "fits", client=client, progress=interrupt)
+
+        def tasks_left(dask_scheduler):
+            return len(dask_scheduler.tasks)
+
+        deadline = time.monotonic() + 5.0
+        while client.run_on_scheduler(tasks_left) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert client.run_on_scheduler(tasks_left) == 0  # the other seven were cancelled
+    assert not (tmp_path / "fits").exists(), list(os.walk(tmp_path / "fits"))
