@@ -362,6 +362,20 @@ def _wait_for_cancelled(client: Any, keys: Sequence[str]) -> None:
             time.sleep(0.05)
 
 
+def _row_of(future: Any, task: _Task) -> Optional[RecordResult]:
+    """The row of a finished task, or None when its result cannot be had now: it was held by a
+    worker that died since, and the scheduler computes it again (a blocking result() would then
+    wait for ever on a cluster without workers)."""
+    if future.status == "lost":
+        return None
+    try:
+        return future.result(timeout=_POLL_SECONDS)
+    except TimeoutError:  # also distributed.TimeoutError, the same class
+        return None
+    except Exception as error:  # the task failed: its worker died, unpickling
+        return RecordResult(task.record, "failed", 0.0, reason=_reason(task, error))
+
+
 def _run_on_cluster(client: Any, tasks: Sequence[_Task],
                     progress: Optional[Callable[[int, int, str], None]], record_timeout: float,
                     worker_timeout: float, stays: bool) -> Tuple[List[RecordResult], str]:
@@ -376,6 +390,7 @@ def _run_on_cluster(client: Any, tasks: Sequence[_Task],
     futures = [client.submit(_task_on_worker, task, pure=False) for task in tasks]
     running = {future: k for k, future in enumerate(futures)}
     completed = distributed.as_completed(futures)
+    again: set = set()  # done once, but the result went with its worker: waited for again
     rows: Dict[int, RecordResult] = {}
     checked = no_worker_since = 0.0
     lost = ""
@@ -389,20 +404,24 @@ def _run_on_cluster(client: Any, tasks: Sequence[_Task],
     try:
         while running and not lost:
             done = completed.next_batch(block=False) if completed.has_ready() else []
+            now = time.monotonic()
+            look = now - checked >= _POLL_SECONDS  # at limits and workers, a few times a second
+            if look:
+                checked = now
+                done += [future for future in again if future.done()]
             for future in done:
-                k = running.pop(future, None)
+                k = running.get(future)
                 if k is None:  # cancelled: its row is written
                     continue
-                try:
-                    row = future.result()
-                except Exception as error:  # the task failed: its worker died, unpickling
-                    row = RecordResult(tasks[k].record, "failed", 0.0,
-                                       reason=_reason(tasks[k], error))
+                row = _row_of(future, tasks[k])
+                if row is None:  # its result was lost with its worker: computed again
+                    again.add(future)
+                    continue
+                again.discard(future)
+                del running[future]
                 future.release()
                 finish(k, row)
-            now = time.monotonic()
-            if now - checked >= _POLL_SECONDS:  # limits and workers, a few times a second
-                checked = now
+            if look:
                 for k, start in list(started.items()):
                     if now - start > record_timeout and futures[k] in running:
                         del running[futures[k]]
@@ -754,12 +773,21 @@ def _signals_end_the_run() -> Iterator[None]:
             signal.signal(number, handler)
 
 
+def _quiet_dask_logs() -> None:
+    """Dask's own log lines (a worker restarted, a cluster closed early) would break the rule of
+    one line per error; what matters reaches the rows and the error message. Its loggers have
+    levels of their own (dask's logging configuration), set when distributed is imported."""
+    with contextlib.suppress(ImportError):
+        import distributed  # noqa: F401  (configures its loggers)
+    for name in list(logging.root.manager.loggerDict):
+        if name.split(".")[0] in ("distributed", "tornado", "asyncio"):
+            logging.getLogger(name).setLevel(logging.CRITICAL)
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command line; returns the exit status."""
     arguments = _parser().parse_args(argv)
-    # Dask's own log lines (a worker restarted, a cluster closed early) would break the rule of
-    # one line per error; what matters reaches the rows and the error message.
-    logging.getLogger("distributed").setLevel(logging.CRITICAL)
+    _quiet_dask_logs()
     # As the other long commands: a bar on a terminal, one line per record in a pipe when asked.
     progress: Any = None
     if not arguments.quiet and sys.stderr.isatty():
