@@ -47,6 +47,7 @@ import stat
 import sys
 import threading
 import time
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import (Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple,
@@ -774,14 +775,17 @@ def _signals_end_the_run() -> Iterator[None]:
 
 
 def _quiet_dask_logs() -> None:
-    """Dask's own log lines (a worker restarted, a cluster closed early) would break the rule of
-    one line per error; what matters reaches the rows and the error message. Its loggers have
+    """Dask's own log lines and warnings (a worker restarted, a cluster closed early) would break
+    the rule of one line per error; what matters reaches the rows and the error message. Its loggers have
     levels of their own (dask's logging configuration), set when distributed is imported."""
     with contextlib.suppress(ImportError):
         import distributed  # noqa: F401  (configures its loggers)
     for name in list(logging.root.manager.loggerDict):
         if name.split(".")[0] in ("distributed", "tornado", "asyncio"):
             logging.getLogger(name).setLevel(logging.CRITICAL)
+    # A signal that interrupts a wait on the cluster leaves Dask's coroutine of it unawaited.
+    warnings.filterwarnings("ignore", message="coroutine .* was never awaited",
+                            category=RuntimeWarning)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
