@@ -1,7 +1,9 @@
-// hyst.io: CSV tables as dicts of numpy columns, and numeric vectors in MATLAB .mat files.
+// hyst.io: CSV tables as dicts of numpy columns, numeric vectors in MATLAB .mat files, and the
+// checks and sets of the outputs (for Python writers of several files, such as hyst.batch).
 
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -9,6 +11,8 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/csv.hpp"
 #include "hyst/io/mat_file.hpp"
+#include "hyst/io/output_paths.hpp"
+#include "hyst/io/output_set.hpp"
 
 namespace hyst::python {
 namespace {
@@ -57,6 +61,35 @@ std::vector<std::pair<std::string, std::vector<double>>> mat_variables(
                         as_vector(pair[1].cast<InputArray>(), fmt::format("variable '{}'", name)));
   }
   return result;
+}
+
+// io::OutputSet with an explicit end: Python cannot rely on when an object is destroyed, so
+// discard() (or leaving a `with` block) removes the staging folder of a set not published.
+class PythonOutputSet {
+ public:
+  PythonOutputSet(const std::filesystem::path& folder, const std::vector<std::string>& names)
+      : set_(std::in_place, folder, names) {}
+
+  const io::OutputSet& set() const {
+    if (!set_) throw Error("this OutputSet was discarded");
+    return *set_;
+  }
+  void publish() {
+    if (!set_) throw Error("this OutputSet was discarded");
+    set_->publish();
+  }
+  void discard() { set_.reset(); }
+
+ private:
+  std::optional<io::OutputSet> set_;
+};
+
+std::vector<io::NamedPath> named_paths(
+    const std::vector<std::pair<std::string, std::string>>& pairs) {
+  std::vector<io::NamedPath> paths;
+  for (const auto& [path, name] : pairs)
+    paths.push_back({path, name});
+  return paths;
 }
 
 }  // namespace
@@ -142,6 +175,52 @@ void bind_io(py::module_& module) {
       "path"_a, "variables"_a, "version"_a = "v5",
       "Writes {name: 1-D values} (or (name, values) pairs) as N x 1 double variables; version "
       "\"v5\" or \"v7.3\".");
+
+  io_module.def(
+      "check_outputs",
+      [](const std::vector<std::pair<std::string, std::string>>& inputs,
+         const std::vector<std::pair<std::string, std::string>>& outputs) {
+        io::check_outputs(named_paths(inputs), named_paths(outputs));
+      },
+      "inputs"_a, "outputs"_a,
+      "Refuses, before any work, outputs that would replace what they must not, as every hyst "
+      "command does: inputs and outputs are (path, name) pairs, the name as messages call it "
+      "(\"--data\"). An output that is the same file as an input (also through links and hard "
+      "links), two outputs that are one file, an output that is a folder or a socket: hyst.Error "
+      "naming both. Inputs that do not exist are skipped.");
+
+  py::class_<PythonOutputSet>(
+      io_module, "OutputSet",
+      "Several files of one run published as a whole (hyst/io/output_set.hpp, as hyst compare "
+      "does): each name in `folder` is a link into the folder of the current set, "
+      "`.hyst-current`, switched by one rename in publish(); a run that is killed or fails "
+      "leaves the complete previous set. Write every file (or folder of files) under staged(); "
+      "leaving a `with` block without publish() removes what was staged.")
+      .def(py::init<const std::filesystem::path&, const std::vector<std::string>&>(), "folder"_a,
+           "names"_a = std::vector<std::string>{},
+           "Creates `folder` (with its parents) and a staging folder in it; `names`, the "
+           "published names as far as known, are checked first (hyst.Error for a name that is a "
+           "folder or a link not of a set). Set folders of dead runs are removed.")
+      .def(
+          "staged",
+          [](const PythonOutputSet& self, const std::string& name) {
+            return self.set().staged(name).string();
+          },
+          "name"_a = "", "Where to write `name` before publish(); \"\": the staging folder.")
+      .def(
+          "published",
+          [](const PythonOutputSet& self, const std::string& name) {
+            return self.set().published(name).string();
+          },
+          "name"_a, "The path readers use for `name` once published: folder/name.")
+      .def("publish", &PythonOutputSet::publish,
+           "Makes the staged files the published set, all names at once.")
+      .def("discard", &PythonOutputSet::discard,
+           "Removes the staging folder unless published; the previous set stays as it was.")
+      .def(
+          "__enter__", [](PythonOutputSet& self) -> PythonOutputSet& { return self; },
+          py::return_value_policy::reference)
+      .def("__exit__", [](PythonOutputSet& self, const py::args&) { self.discard(); });
 }
 
 }  // namespace hyst::python

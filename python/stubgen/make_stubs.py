@@ -29,7 +29,8 @@ RENAMES = [(r"numpy\.ndarray\[numpy\.float64\]", "NDArray[numpy.float64]"),
            (r"\bhandle\b", "Any"), (r"\bobject\b", "Any"), (r"\bsequence\b", "Sequence[Any]"),
            (r"\bos\.PathLike\b", "Union[str, os.PathLike[str]]"), (r"\bcallable\b", "Any")]
 # Dunder methods worth declaring (the others come from object).
-DUNDERS = {"__len__", "__getitem__", "__iter__", "__contains__", "__call__", "__eq__"}
+DUNDERS = {"__len__", "__getitem__", "__iter__", "__contains__", "__call__", "__eq__", "__enter__",
+           "__exit__"}
 
 
 class Names:

@@ -5,7 +5,12 @@ command line."""
 
 import csv
 import json
+import os
+import signal
+import stat
+import subprocess
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
@@ -139,23 +144,28 @@ def test_the_serial_run_gives_the_same_rows(records, on_cluster, tmp_path):
     assert "in one process, serially" in (tmp_path / "batch.md").read_text()
 
 
-def test_a_worker_that_dies_fails_its_record_only(tmp_path):
-    write_records(tmp_path, 4)
-    hyst.io.write_csv(tmp_path / "zz_kills_its_worker.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
-
-    def kill_on_that_record():  # runs on the worker: that record's task ends its process
+def exit_on(record_suffix):
+    """A function for client.run: on the worker, the task of the record ending in
+    `record_suffix` ends the worker's process; the others run as usual."""
+    def patch():
         import os
         import time
         import hyst.batch
         run = hyst.batch._run_task
 
-        def run_or_die(task):
-            if not task.record.endswith("zz_kills_its_worker.csv"):
+        def run_or_exit(task):
+            if not task.record.endswith(record_suffix):
                 return run(task)
-            time.sleep(0.5)  # the worker reports the tasks it has finished before it dies
+            time.sleep(0.5)  # the worker reports the tasks it has finished before it goes
             os._exit(1)
 
-        hyst.batch._run_task = run_or_die
+        hyst.batch._run_task = run_or_exit
+    return patch
+
+
+def test_a_worker_that_dies_fails_its_record_only(tmp_path):
+    write_records(tmp_path, 4)
+    hyst.io.write_csv(tmp_path / "zz_kills_its_worker.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
 
     # One worker runs the tasks in the order submitted, so the record submitted last dies alone;
     # with no retry, one death is its failure.
@@ -163,7 +173,7 @@ def test_a_worker_that_dies_fails_its_record_only(tmp_path):
             distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
                                      dashboard_address=":0") as cluster, \
             distributed.Client(cluster) as client:
-        client.run(kill_on_that_record)
+        client.run(exit_on("zz_kills_its_worker.csv"))
         rows = hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
                               out=tmp_path / "fits", client=client)
     assert [row.status for row in rows] == ["ok"] * 4 + ["failed"], rows
@@ -247,3 +257,282 @@ def test_the_command_line(tmp_path, capsys):
     error = capsys.readouterr().err
     assert error.count("\n") == 1 and error.startswith("hyst: error: ")
     assert "expected key=value" in error and "see 'hyst batch fit --help'" in error
+
+
+# --- Runs that never damage and always end -------------------------------------------------------
+
+def published_files(folder):
+    """{name: bytes} of every file a reader sees in `folder` (through the set's links), below it
+    too; the set's own folders (.hyst-*) are left out."""
+    files = {}
+    for where, folders, names in os.walk(folder, followlinks=True):
+        folders[:] = [name for name in folders if not name.startswith(".hyst-")]
+        for name in names:
+            if not name.startswith(".hyst-"):
+                path = Path(where) / name
+                files[str(path.relative_to(folder))] = path.read_bytes()
+    return files
+
+
+def set_folders(folder):
+    return sorted(path.name for path in Path(folder).iterdir()
+                  if path.name.startswith(".hyst-set."))
+
+
+def test_an_output_that_is_a_record_is_refused_before_any_work(tmp_path):
+    records = tmp_path / "rec"
+    records.mkdir()
+    write_records(records, 2)
+    (records / "batch.csv").write_text("v,y\n0,0\n1,1\n")  # a record named like the table
+    before = published_files(records)
+    with pytest.raises(hyst.Error, match=rf"out '{records}/batch.csv' is the same file as the "
+                                         rf"input record '{records}/batch.csv'"):
+        hyst.batch.fit(str(records / "*.csv"), "pi", input="v", output="y", out=records,
+                       workers=0)
+    assert published_files(records) == before and not set_folders(records)
+    # Through a hard link: fits/r001.json is the record r001.csv under another name.
+    out = tmp_path / "fits"
+    out.mkdir()
+    (records / "r001.json").hardlink_to(records / "r001.csv")
+    with pytest.raises(hyst.Error, match=r"out '.*r001.json' is the same file as the input "
+                                         r"record '.*rec/r001.csv'"):
+        hyst.batch.fit([str(records / "r000.csv"), str(records / "r001.csv")], "pi", input="v",
+                       output="y", out=records, workers=0)
+    assert (records / "r001.csv").read_bytes() == before["r001.csv"]
+
+
+def test_records_that_are_not_regular_files_are_refused_up_front(tmp_path):
+    write_records(tmp_path, 1)
+    fifo = tmp_path / "r_fifo.csv"
+    os.mkfifo(fifo)  # reading it would block forever: no writer
+    out = tmp_path / "new" / "fits"
+    for workers in (0, 2):
+        with pytest.raises(ValueError, match=rf"record '{fifo}' is a FIFO, not a regular file"):
+            hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y", out=out,
+                           workers=workers)
+    (tmp_path / "folder.csv").mkdir()
+    with pytest.raises(ValueError, match=r"record '.*folder.csv' is a folder, not a regular"):
+        hyst.batch.fit([str(tmp_path / "r000.csv"), str(tmp_path / "folder.csv")], "pi",
+                       input="v", output="y", out=out, workers=0)
+    assert not (tmp_path / "new").exists()
+
+
+def test_a_run_publishes_one_set_with_the_usual_file_mode(tmp_path):
+    (tmp_path / "a").mkdir()
+    write_records(tmp_path / "a", 2)
+    write_records(tmp_path, 1)
+    out = tmp_path / "fits"
+    old_umask = os.umask(0o022)
+    try:
+        rows = hyst.batch.fit([str(tmp_path / "r000.csv"), str(tmp_path / "a" / "r001.csv")],
+                              "pi", input="v", output="y", out=out, workers=0)
+    finally:
+        os.umask(old_umask)
+    assert [row.status for row in rows] == ["ok", "ok"]
+    assert sorted(published_files(out)) == ["a/r001.json", "batch.csv", "batch.md", "r000.json"]
+    for name in ("batch.csv", "batch.md", "r000.json", "a"):  # every name is a link of the set
+        assert os.readlink(out / name) == f".hyst-current/{name}"
+    for name in ("batch.csv", "batch.md", "r000.json", "a/r001.json"):
+        assert stat.S_IMODE(os.stat(out / name).st_mode) == 0o644, name
+    assert len(set_folders(out)) == 1
+
+
+def test_bad_time_limits_are_refused_naming_them(tmp_path, capsys):
+    write_records(tmp_path, 1)
+    record = str(tmp_path / "r000.csv")
+    for name, value in (("timeout", -1), ("record_timeout", float("nan")), ("timeout", 0)):
+        with pytest.raises(ValueError, match=rf"{name} = {value!r} must be a number of seconds"):
+            hyst.batch.fit(record, "pi", input="v", output="y", out=tmp_path / "o", workers=0,
+                           **{name: value})
+    for option, value in (("--timeout", "-1"), ("--record-timeout", "nan"), ("--timeout", "1s")):
+        with pytest.raises(SystemExit) as raised:
+            hyst.batch.main(["fit", "--model", "pi", "--data", record, "--input", "v",
+                             "--output", "y", "--out", str(tmp_path / "o"), option, value])
+        assert raised.value.code == 2
+        error = capsys.readouterr().err
+        assert error.count("\n") == 1, error
+        assert f"argument {option}: '{value}' is not a number of seconds > 0" in error
+    assert not (tmp_path / "o").exists()
+
+
+def closed_port():
+    """A port of 127.0.0.1 that nothing listens on (bound, then closed)."""
+    import socket
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
+
+
+def test_an_unreachable_scheduler_fails_at_once_and_leaves_no_folder(tmp_path):
+    write_records(tmp_path, 1)
+    address = f"tcp://127.0.0.1:{closed_port()}"
+    start = time.monotonic()
+    with pytest.raises(ConnectionError, match=rf"cannot connect to the Dask scheduler at "
+                                              rf"'{address}': Connection refused"):
+        hyst.batch.fit(str(tmp_path / "r000.csv"), "pi", input="v", output="y",
+                       out=tmp_path / "new" / "fits", scheduler=address)  # timeout 30 s
+    assert time.monotonic() - start < 3.0
+    assert not (tmp_path / "new").exists()
+
+
+def slow_on(record_suffix, seconds):
+    """A function for client.run (or to call here): the task of the record ending in
+    `record_suffix` sleeps `seconds` first; the others run as usual."""
+    def patch():
+        import time
+        import hyst.batch
+        run = hyst.batch._run_task
+
+        def run_slowly(task):
+            if task.record.endswith(record_suffix):
+                time.sleep(seconds)
+            return run(task)
+
+        hyst.batch._run_task = run_slowly
+    return patch
+
+
+def test_a_record_over_its_time_limit_fails_in_this_process(tmp_path, monkeypatch):
+    write_records(tmp_path, 2)
+    hyst.io.write_csv(tmp_path / "r_slow.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
+    monkeypatch.setattr(hyst.batch, "_run_task", hyst.batch._run_task)  # restored afterwards
+    slow_on("r_slow.csv", 30.0)()
+    start = time.monotonic()
+    rows = hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
+                          out=tmp_path / "fits", workers=0, record_timeout=0.5)
+    assert time.monotonic() - start < 5.0
+    assert [row.status for row in rows] == ["ok", "ok", "failed"]
+    assert rows[2].reason == (f"{tmp_path / 'r_slow.csv'}: not finished within 0.5 s "
+                              "(record_timeout, --record-timeout)")
+    assert not (tmp_path / "fits" / "r_slow.json").exists()
+
+
+def one_worker_cluster():
+    return distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                                    dashboard_address=":0")
+
+
+def test_a_record_over_its_time_limit_fails_and_its_worker_is_restarted(tmp_path):
+    write_records(tmp_path, 3)
+    hyst.io.write_csv(tmp_path / "a_slow.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
+    with one_worker_cluster() as cluster, distributed.Client(cluster) as client:
+        client.run(slow_on("a_slow.csv", 600.0))  # submitted first: it holds the one worker
+        start = time.monotonic()
+        rows = hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
+                              out=tmp_path / "fits", client=client, record_timeout=1.0)
+        assert time.monotonic() - start < 15.0
+    assert [row.status for row in rows] == ["failed", "ok", "ok", "ok"], rows
+    assert "not finished within 1 s (record_timeout" in rows[0].reason
+
+
+def test_a_cluster_left_without_workers_ends_the_run_and_publishes_the_rows(tmp_path):
+    write_records(tmp_path, 3)
+    hyst.io.write_csv(tmp_path / "zz_last.csv", {"v": [0.0, 1.0], "y": [0.0, 1.0]})
+    with one_worker_cluster() as cluster, distributed.Client(cluster) as client:
+        client.run(exit_on("zz_last.csv"))
+        for nanny in cluster.workers.values():
+            nanny.close_gracefully()  # the worker that exits is not started again
+        start = time.monotonic()
+        with pytest.raises(hyst.batch.ClusterLost, match=r"has had no worker for 1 s; the run "
+                                                         r"ended with 3 of 4 records fitted"):
+            hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
+                           out=tmp_path / "fits", client=client, timeout=1.0)
+        assert time.monotonic() - start < 15.0
+    with open(tmp_path / "fits" / "batch.csv", newline="") as file:
+        table = list(csv.DictReader(file))
+    assert [line["status"] for line in table] == ["ok", "ok", "ok", "failed"]
+    assert "not fitted: the Dask cluster at" in table[3]["reason"]
+    assert sorted(published_files(tmp_path / "fits")) == [
+        "batch.csv", "batch.md", "r000.json", "r001.json", "r002.json"]
+
+
+def start_batch(records, out, *extra):
+    """`python3 -m hyst.batch fit` as the command line runs it, with a progress line per record."""
+    command = [sys.executable, "-m", "hyst.batch", "fit", "--model", "pi", "--data",
+               str(records / "*.csv"), "--input", "v", "--output", "y", "--out", str(out),
+               "--option", "operators=12", "--progress", *extra]
+    return subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            text=True)
+
+
+def stop_after(process, records_done, signal_number):
+    """Sends the signal once `records_done` progress lines were printed; returns (status,
+    the lines of standard error)."""
+    lines = []
+    while len(lines) < records_done:
+        line = process.stderr.readline()
+        assert line, f"the run ended early: {lines}"
+        lines.append(line)
+    process.send_signal(signal_number)
+    rest = process.stderr.read()  # through the same buffer as readline()
+    return process.wait(timeout=30), lines + rest.splitlines(keepends=True)
+
+
+@pytest.fixture(scope="module")
+def previous_set(tmp_path_factory):
+    """A finished run of 5 records, and 100 records for a rerun into the same folder (about
+    1 s to fit in one process, so that a signal after 50 progress lines stops it half-way)."""
+    folder = tmp_path_factory.mktemp("previous")
+    small, large = folder / "small", folder / "large"
+    small.mkdir()
+    large.mkdir()
+    write_records(small, 5)
+    write_records(large, 100, seed=9)
+    return small, large
+
+
+@pytest.mark.parametrize("signal_number, records_done", [
+    (signal.SIGINT, 1), (signal.SIGTERM, 20), (signal.SIGKILL, 2), (signal.SIGKILL, 50)])
+def test_a_stopped_rerun_leaves_the_complete_previous_set(previous_set, tmp_path, signal_number,
+                                                          records_done):
+    small, large = previous_set
+    out = tmp_path / "fits"
+    hyst.batch.fit(str(small / "*.csv"), "pi", input="v", output="y", out=out, workers=0,
+                   options={"operators": 12})
+    before = published_files(out)
+    status, stderr = stop_after(start_batch(large, out, "--workers", "0"), records_done,
+                                signal_number)
+    assert published_files(out) == before  # no new model file beside the old tables
+    if signal_number == signal.SIGKILL:
+        assert status == -signal.SIGKILL
+        rows = hyst.batch.fit(str(large / "*.csv"), "pi", input="v", output="y", out=out,
+                              workers=0, options={"operators": 12})  # the next run cleans up
+        assert len(published_files(out)) == len(rows) + 2 and len(set_folders(out)) == 1
+        return
+    name = signal.Signals(signal_number).name
+    assert status == 128 + signal_number, stderr
+    assert stderr[-1] == f"hyst: error: stopped by {name}; {out} keeps its previous files\n"
+    assert not any("Traceback" in line for line in stderr), stderr
+    assert len(set_folders(out)) == 1  # the stopped run's staging folder is gone
+
+
+def test_an_interrupted_cluster_run_ends_at_once_with_one_line(previous_set, tmp_path):
+    _, large = previous_set
+    process = start_batch(large, tmp_path / "fits", "--workers", "1")
+    start = time.monotonic()
+    status, stderr = stop_after(process, 1, signal.SIGINT)
+    assert status == 130 and time.monotonic() - start < 15.0
+    assert stderr[-1].startswith("hyst: error: stopped by SIGINT; ")
+    assert all(line.startswith("hyst.batch.fit: ") for line in stderr[:-1]), stderr  # progress
+    assert not (tmp_path / "fits").exists()  # the folder it created is removed again
+
+
+def test_an_interrupt_cancels_the_runs_tasks_on_the_callers_cluster(tmp_path):
+    write_records(tmp_path, 8)
+
+    def interrupt(done, total, record):  # as SIGINT would, after the first record
+        raise KeyboardInterrupt
+
+    with one_worker_cluster() as cluster, distributed.Client(cluster) as client:
+        with pytest.raises(KeyboardInterrupt):
+            hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y",
+                           out=tmp_path / "fits", client=client, progress=interrupt)
+
+        def tasks_left(dask_scheduler):
+            return len(dask_scheduler.tasks)
+
+        deadline = time.monotonic() + 5.0
+        while client.run_on_scheduler(tasks_left) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert client.run_on_scheduler(tasks_left) == 0  # the other seven were cancelled
+    assert not (tmp_path / "fits").exists(), list(os.walk(tmp_path / "fits"))

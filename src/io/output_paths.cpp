@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <map>
 #include <optional>
 #include <system_error>
 #include <tuple>
@@ -121,7 +122,15 @@ void create_output_folder(const fs::path& folder) {
 }
 
 void check_outputs(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
-  std::vector<std::optional<Identity>> seen;
+  // Each input is stat()ed once and each output looked up by its identity, so that a batch of
+  // thousands of records and model files costs O(n log n), not O(n^2) system calls.
+  std::map<Identity, std::size_t> input_of;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    struct stat status {};
+    if (inputs[k].path == "-" || ::stat(inputs[k].path.c_str(), &status) != 0) continue;
+    input_of.emplace(Identity{status.st_dev, status.st_ino, ""}, k);  // the first keeps its name
+  }
+  std::map<Identity, std::size_t> output_of;
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const auto& output = outputs[k];
     std::optional<Identity> identity;
@@ -133,23 +142,17 @@ void check_outputs(const std::vector<NamedPath>& inputs, const std::vector<Named
         throw Error(fmt::format("{}: {}", named(output), why));
       }
       identity = identity_of(target.path);
-      for (const auto& input : inputs) {
-        if (input.path == "-") continue;
-        struct stat status {};
-        if (::stat(input.path.c_str(), &status) != 0) continue;
-        if (identity == Identity{status.st_dev, status.st_ino, ""}) {
-          throw Error(fmt::format("{} is the same file as the input {}; choose another output",
-                                  named(output), named(input)));
-        }
+      if (const auto input = identity ? input_of.find(*identity) : input_of.end();
+          input != input_of.end()) {
+        throw Error(fmt::format("{} is the same file as the input {}; choose another output",
+                                named(output), named(inputs[input->second])));
       }
     }
-    for (std::size_t j = 0; j < k; ++j) {
-      if (identity && seen[j] == identity) {
-        throw Error(fmt::format("{} and {} are the same file; choose two different outputs",
-                                named(outputs[j]), named(output)));
-      }
+    if (!identity) continue;
+    if (const auto [earlier, fresh] = output_of.emplace(*identity, k); !fresh) {
+      throw Error(fmt::format("{} and {} are the same file; choose two different outputs",
+                              named(outputs[earlier->second]), named(output)));
     }
-    seen.push_back(identity);
   }
 }
 

@@ -1680,6 +1680,35 @@ case_batch_fit() {
     "$HYST" batch fit --model pi --data records/r1.csv --output y --out x/
   expect_error 1 "no folder of HYST_PYTHONPATH='$WORK/none' holds the Python package hyst" -- \
     env HYST_PYTHONPATH="$WORK/none" "$HYST" batch fit --help
+
+  # The model files and tables are one published set: every name a link into .hyst-current.
+  [ "$(readlink fits/batch.csv)" = .hyst-current/batch.csv ] &&
+    [ "$(readlink fits/r1.json)" = .hyst-current/r1.json ] ||
+    fail "fits/ is not a published set: $(ls -la fits)"
+  # The tables get the mode of every other output: 0666 less the umask (0644 under 022).
+  [ "$(stat -L -c %a fits/batch.csv)" = "$(printf '%o' $((0666 & ~$(umask))))" ] ||
+    fail "fits/batch.csv has mode $(stat -L -c %a fits/batch.csv)"
+  # A record named like the table, with --out its folder: refused, the record untouched.
+  cp records/r1.csv records/batch.csv
+  expect_error 1 "out 'records/batch.csv' is the same file as the input record 'records/batch.csv'" -- \
+    "$HYST" batch fit --model pi --data 'records/*.csv' --input v --output y --out records/ --workers 0
+  cmp -s records/r1.csv records/batch.csv || fail "records/batch.csv was overwritten"
+  [ -z "$(find records -name '.hyst-*')" ] || fail "the refused run left files in records/"
+  rm records/batch.csv
+  # A FIFO among the records is refused up front (reading it would never end).
+  mkfifo records/r_fifo.csv
+  expect_error 1 "record 'records/r_fifo.csv' is a FIFO, not a regular file" -- \
+    "$HYST" batch fit --model pi --data 'records/*.csv' --input v --output y --out new/x --workers 0
+  rm records/r_fifo.csv
+  # Bad limits name the option and the value; a refused port fails at once; no folder is left.
+  expect_error 2 "argument --timeout: '-1' is not a number of seconds > 0" -- \
+    "$HYST" batch fit --model pi --data records/r1.csv --input v --output y --out new/x --timeout -1
+  local started=$SECONDS
+  expect_error 1 "cannot connect to the Dask scheduler at 'tcp://127.0.0.1:9': Connection refused" -- \
+    "$HYST" batch fit --model pi --data records/r1.csv --input v --output y --out new/x \
+    --scheduler tcp://127.0.0.1:9
+  [ $((SECONDS - started)) -lt 10 ] || fail "the refused scheduler port took $((SECONDS - started)) s"
+  [ ! -e new ] || fail "a failed run left the folder new/"
 }
 
 # --- main -------------------------------------------------------------------------------------

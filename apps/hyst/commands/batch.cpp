@@ -93,7 +93,9 @@ Examples:
       --scheduler tcp://head:8786 --option operators=12
 Without --scheduler it starts a local cluster of --workers processes (default 2) on this
 machine and closes it at the end. The workers read the records and write the model files, so
-both must be on a file system every worker sees at the same path (docs/scaling.md).
+both must be on a file system every worker sees at the same path (docs/scaling.md). The
+model files and tables are published as one set (each name a link into .hyst-current), so a
+run that is stopped or fails leaves the previous set.
 It runs '{} -m hyst.batch ...', which needs Dask distributed (apt-get install
 python3-distributed), with the folders of HYST_PYTHONPATH on PYTHONPATH when it is set, else
 the package of this build:

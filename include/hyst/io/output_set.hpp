@@ -16,6 +16,8 @@
 //! switch); names the new set lacks lose their link afterwards. Plain files left under a name by
 //! an older hyst are first hard-linked into the current set and then replaced by the link, so
 //! their content never changes under a reader. After the switch the old set folder is removed.
+//! A name may also be a folder of files staged in the set (hyst batch's model files of records
+//! in subfolders): its link then leads into the set like a file's.
 //! Every temporary name lies inside a set folder; the set folders of runs that died are removed
 //! by the next run. Two runs publishing into the same folder at the same time are not supported.
 
