@@ -72,6 +72,18 @@ void throw_not_periodic(std::size_t iterations, double change, double tolerance)
               "max_iterations");
 }
 
+void throw_diverging(std::size_t period, double magnitude) {
+  const auto reached = std::isfinite(magnitude) ? fmt::format("{:.3g}", magnitude)
+                                                : std::string("values that are not finite");
+  throw Error(fmt::format("hysteretic LFR: the loop diverges: in period {} of the search for the "
+                          "periodic steady state the hysteresis outputs reach {} (the limit is "
+                          "{:g}); the feedback makes the loop unstable for this input (e.g. a "
+                          "negative hysteresis weight, or a feedback gain too large for the linear "
+                          "block)",
+                          period, reached, kMaxPeriodicMagnitude),
+              "feedback");
+}
+
 void require_hammerstein_blocks(std::size_t linear_inputs, std::size_t blocks) {
   if (blocks != linear_inputs)
     throw Error(fmt::format("Hammerstein system: {} blocks for a linear block with {} inputs; "

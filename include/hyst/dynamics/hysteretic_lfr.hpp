@@ -65,6 +65,10 @@ namespace lfr_detail {
 void require_signal(const Eigen::MatrixXd& signal, std::size_t columns, const char* what);
 //! Throws hyst::Error saying that the periodic state did not converge within the limit.
 [[noreturn]] void throw_not_periodic(std::size_t iterations, double change, double tolerance);
+//! Throws hyst::Error saying that the loop diverged: in period `period` of the search for the
+//! periodic state the hysteresis outputs reached `magnitude` (beyond kMaxPeriodicMagnitude, or
+//! not finite).
+[[noreturn]] void throw_diverging(std::size_t period, double magnitude);
 //! Throws hyst::Error unless there is one block per input of the linear block.
 void require_hammerstein_blocks(std::size_t linear_inputs, std::size_t blocks);
 //! Throws hyst::Error for a state of the wrong size or with a non-finite value.
@@ -228,7 +232,7 @@ class HystereticLfr {
       change = (w - linear_input.rightCols(q)).cwiseAbs().maxCoeff() / scale;
       // A loop that diverges within a period leaves nothing to solve for.
       if (!std::isfinite(change) || !std::isfinite(scale) || scale > kMaxPeriodicMagnitude)
-        lfr_detail::throw_not_periodic(iteration + 1, change, options.tolerance);
+        lfr_detail::throw_diverging(iteration + 1, scale);
       linear_input.rightCols(q) = w;
       if (solve_linear && iteration > 0 && change > 0.5 * previous_change) solve_linear = false;
       previous_change = change;

@@ -204,6 +204,10 @@ void check_experiments(const StateSpace& linear, std::span<const PeriodicExperim
           "{}: experiment {} has {} period per realisation; the fit needs 2 "
           "or more (the first, which may hold the experiment's transient, is not scored)",
           fit, e, x.input.periods));
+    // Every sample, the unscored first period too: it drives the simulation and enters the
+    // outputs' scales and deviations.
+    require_finite_signals(x.input, fmt::format("{}: experiment {} input", fit, e));
+    require_finite_signals(x.output, fmt::format("{}: experiment {} output", fit, e));
   }
 }
 
