@@ -14,6 +14,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/identify/fit_quality.hpp"
 #include "hyst/identify/reference_predictors.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
 
@@ -86,6 +87,13 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
 }
 
 }  // namespace
+
+void require_fit_record_count(std::size_t count) {
+  if (count > io::limits::kMaxFitRecords)
+    throw Error(fmt::format("{} records, more than the limit of {} records of one fit", count,
+                            io::limits::kMaxFitRecords),
+                "records");
+}
 
 FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   if (!entry.can_fit()) throw Error(fmt::format("model '{}' has no fitter", entry.name));

@@ -9,6 +9,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/state_space_file.hpp"
@@ -46,6 +47,11 @@ FeedbackModels feedback_models(const std::vector<const DynamicModel*>& feedback)
                               "model; every channel must be of one kind",
                               i, name, result.name),
                   fmt::format("feedback[{}].model", i));
+    if (model.parameter_count() > io::limits::kMaxLfrChannelParameters)
+      throw Error(fmt::format("hysteretic LFR: feedback[{}] has {} parameters, more than the "
+                              "limit of {} for one hysteresis channel",
+                              i, model.parameter_count(), io::limits::kMaxLfrChannelParameters),
+                  fmt::format("feedback[{}].params", i));
     result.name = name;
     result.models.push_back(entry.actuator_force->hysteresis(model));
     if (result.models.back().index() != result.models.front().index())
@@ -57,6 +63,14 @@ FeedbackModels feedback_models(const std::vector<const DynamicModel*>& feedback)
     result.parameters += model.parameter_count();
   }
   return result;
+}
+
+void require_lfr_order(const StateSpace& linear) {
+  if (linear.order() > io::limits::kMaxLfrOrder)
+    throw Error(fmt::format("hysteretic LFR: the linear block has {} states, more than the limit "
+                            "of {}",
+                            linear.order(), io::limits::kMaxLfrOrder),
+                "linear.a");
 }
 
 std::size_t linear_parameters(const StateSpace& linear, std::size_t feedback) {
@@ -85,6 +99,7 @@ AnyHystereticLfr::AnyHystereticLfr(AnyHystereticLfrModel model, nlohmann::json f
 AnyHystereticLfr::AnyHystereticLfr(StateSpace linear, std::size_t inputs,
                                    const std::vector<const DynamicModel*>& feedback)
     : AnyHystereticLfr([&] {
+        require_lfr_order(linear);
         auto parts = feedback_models(feedback);
         auto model = std::visit(
             [&](const auto& first) -> AnyHystereticLfrModel {
@@ -98,6 +113,7 @@ AnyHystereticLfr::AnyHystereticLfr(StateSpace linear, std::size_t inputs,
 
 AnyHystereticLfr AnyHystereticLfr::hammerstein(const StateSpace& linear,
                                                const std::vector<const DynamicModel*>& blocks) {
+  require_lfr_order(linear);
   auto parts = feedback_models(blocks);
   auto model = std::visit(
       [&](const auto& first) -> AnyHystereticLfrModel {
@@ -194,6 +210,9 @@ HystereticLfrFile hysteretic_lfr_from_json(const nlohmann::json& document,
       throw Error("params.feedback: expected an array of model objects");
     p.finish();
     StateSpace linear = state_space_from_params(*linear_json, "params.linear");
+    if (feedback_json->size() > StateSpace::max_channels)
+      throw Error(fmt::format("params.feedback: {} hysteresis channels, more than the limit of {}",
+                              feedback_json->size(), StateSpace::max_channels));
     std::vector<std::unique_ptr<DynamicModel>> owned;
     for (std::size_t i = 0; i < feedback_json->size(); ++i) {
       const auto path = fmt::format("params.feedback[{}]", i);
