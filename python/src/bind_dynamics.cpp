@@ -21,6 +21,7 @@
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/io/numpy_file.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
+#include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::python {
@@ -30,9 +31,13 @@ constexpr const char* kDefaultLayout = "N,channel,realisation,period";
 
 using AnyArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-//! A numpy array of any dimension as periodic signals, its axes named by `layout`.
-PeriodicSignals periodic_signals(const AnyArray& array, const std::string& layout,
+//! A numpy array of any dimension as periodic signals, its axes named by `layout`; None and
+//! arrays above the limit of files are refused by `name` before anything is copied.
+PeriodicSignals periodic_signals(const py::object& value, const std::string& layout,
                                  const std::string& name) {
+  const AnyArray array = as_bounded_array(value, name);
+  if (array.ndim() == 0)
+    throw Error(fmt::format("{} is a single number; expected an array of periodic signals", name));
   io::NumpyArray values;
   for (py::ssize_t d = 0; d < array.ndim(); ++d)
     values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
@@ -45,20 +50,22 @@ PeriodicSignals periodic_signals(const AnyArray& array, const std::string& layou
     used += (used.empty() ? "" : ",") + layout.substr(start, comma - start);
     start = comma + 1;
   }
-  return io::arrange_periodic(values, used, name);
+  return naming_failed_allocation(
+      fmt::format("arranging {} ({} values) as periodic signals", name, array.size()),
+      [&] { return io::arrange_periodic(values, used, name); });
 }
 
 std::vector<PeriodicExperiment> experiments_of(const py::sequence& pairs,
                                                const std::string& layout) {
+  require_fit_record_count(pairs.size());
   std::vector<PeriodicExperiment> experiments;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const auto pair = pairs[i].cast<py::sequence>();
     if (pair.size() != 2)
       throw Error(fmt::format("experiments[{}]: expected an (input, output) pair", i));
-    experiments.push_back({periodic_signals(pair[0].cast<AnyArray>(), layout,
-                                            fmt::format("experiments[{}] input", i)),
-                           periodic_signals(pair[1].cast<AnyArray>(), layout,
-                                            fmt::format("experiments[{}] output", i))});
+    experiments.push_back(
+        {periodic_signals(pair[0], layout, fmt::format("experiments[{}] input", i)),
+         periodic_signals(pair[1], layout, fmt::format("experiments[{}] output", i))});
   }
   return experiments;
 }
@@ -109,14 +116,17 @@ SimulationScore score_model(const AnyHystereticLfr& model, const PeriodicSignals
 }
 
 template <class Model>
-py::dict evaluate_model(const Model& model, const AnyArray& input, const AnyArray& output,
+py::dict evaluate_model(const Model& model, const py::object& input, const py::object& output,
                         const std::string& layout, bool periodic, std::size_t transient) {
   const auto u = periodic_signals(input, layout, "input");
   const auto y = periodic_signals(output, layout, "output");
-  const auto score = [&] {
-    py::gil_scoped_release release;
-    return score_model(model, u, y, {periodic, transient});
-  }();
+  const auto score =
+      naming_failed_allocation(fmt::format("scoring the model ({} states) on {} input values",
+                                           model.order(), u.values.size()),
+                               [&] {
+                                 py::gil_scoped_release release;
+                                 return score_model(model, u, y, {periodic, transient});
+                               });
   return score_dict(score);
 }
 
@@ -128,10 +138,13 @@ void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const ch
   const auto run = [fit](const StateSpace& linear, const py::sequence& experiments,
                          const std::string& layout, const Options& options) {
     const auto data = experiments_of(experiments, layout);
-    auto result = [&] {
-      py::gil_scoped_release release;
-      return fit(linear, data, options);
-    }();
+    auto result = naming_failed_allocation(
+        fmt::format("fitting a {}-state model with {} thresholds per channel to {} experiments",
+                    linear.order(), options.threshold_fractions.size(), data.size()),
+        [&] {
+          py::gil_scoped_release release;
+          return fit(linear, data, options);
+        });
     return py::make_tuple(any_hysteretic_lfr(result.model), std::move(result.report));
   };
   const auto options = [](const std::vector<double>& threshold_fractions, bool fit_poles,
@@ -303,10 +316,13 @@ void bind_dynamics(py::module_& module) {
         options.subspace_block_rows = subspace_block_rows;
         options.max_pole_radius = max_pole_radius;
         options.progress = progress_callback(progress);
-        auto fit = [&] {
-          py::gil_scoped_release release;
-          return fit_state_space(bla, options);
-        }();
+        auto fit = naming_failed_allocation(
+            fmt::format("fitting a state-space model of order {} to {} lines", order,
+                        bla.lines.size()),
+            [&] {
+              py::gil_scoped_release release;
+              return fit_state_space(bla, options);
+            });
         return py::make_tuple(std::move(fit.model), std::move(fit.report));
       },
       "bla"_a, "order"_a, "weighting"_a = "none", "max_iterations"_a = 200,
