@@ -17,6 +17,7 @@
 #include "hyst/dynamics/fit_hammerstein.hpp"
 #include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
+#include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/io/numpy_file.hpp"
@@ -115,9 +116,17 @@ SimulationScore score_model(const AnyHystereticLfr& model, const PeriodicSignals
   return score_hysteretic_lfr(model, u, y, options);
 }
 
+const StateSpace& linear_block(const StateSpace& model) {
+  return model;
+}
+const StateSpace& linear_block(const AnyHystereticLfr& model) {
+  return model.linear();
+}
+
 template <class Model>
 py::dict evaluate_model(const Model& model, const py::object& input, const py::object& output,
-                        const std::string& layout, bool periodic, std::size_t transient) {
+                        const std::string& layout, bool periodic, std::size_t transient,
+                        bool strict) {
   const auto u = periodic_signals(input, layout, "input");
   const auto y = periodic_signals(output, layout, "output");
   const auto score =
@@ -127,7 +136,12 @@ py::dict evaluate_model(const Model& model, const py::object& input, const py::o
                                  py::gil_scoped_release release;
                                  return score_model(model, u, y, {periodic, transient});
                                });
-  return score_dict(score);
+  const auto warnings = free_run_warnings(linear_block(model), score.runaway);
+  if (strict && !warnings.empty()) throw Error(warnings.front() + " (strict=True)");
+  auto out = score_dict(score);
+  out["warnings"] = warnings;
+  out["runaway_samples"] = score.runaway.samples;
+  return out;
 }
 
 // A fit of a model with hysteresis from a linear model (fit_hysteretic_lfr, fit_hammerstein),
@@ -415,11 +429,16 @@ void bind_dynamics(py::module_& module) {
 
   module.def("evaluate", &evaluate_model<StateSpace>, "model"_a, "input"_a, "output"_a,
              "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0,
+             "strict"_a = false,
              "The benchmark score of a model on periodic test data: per output channel the RMSE "
              "of the free-run simulation averaged over realisations and periods, relative to the "
-             "channel's standard deviation, and their means (a dict of numpy arrays and numbers).");
+             "channel's standard deviation, and their means (a dict of numpy arrays and numbers). "
+             "'warnings' lists why the free run cannot be trusted (a pole outside the unit circle, "
+             "'runaway_samples' more than 10 times their channel's measured range beyond it); "
+             "strict=True raises hyst.Error instead.");
   module.def("evaluate", &evaluate_model<AnyHystereticLfr>, "model"_a, "input"_a, "output"_a,
-             "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0);
+             "layout"_a = kDefaultLayout, "periodic"_a = false, "transient"_a = 0,
+             "strict"_a = false);
 }
 
 }  // namespace hyst::python

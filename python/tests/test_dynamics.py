@@ -110,6 +110,21 @@ def test_bla_and_fit_recover_a_system_simulated_with_numpy():
         hyst.estimate_bla([(u[:, :, :1], y[:, :, :1])], sample_time=1.0)
 
 
+def test_evaluate_says_when_the_free_run_cannot_be_trusted():
+    u, y, truth = two_lag_experiment()
+    score = hyst.evaluate(truth, u, y, periodic=True, strict=True)
+    assert score["warnings"] == [] and score["runaway_samples"] == 0
+    # A pole at 1.05 from rest: 1.05^n leaves the measured range within the record.
+    unstable = hyst.StateSpace([[1.05, 0.0], [0.0, 0.5]], truth.b, truth.c, truth.d,
+                               sample_time=truth.sample_time)
+    score = hyst.evaluate(unstable, u, y)
+    assert len(score["warnings"]) == 2 and score["runaway_samples"] > 0
+    assert "pole of magnitude 1.05, outside the unit circle" in score["warnings"][0]
+    assert "simulated samples ran away" in score["warnings"][1]
+    with pytest.raises(hyst.Error, match=r"pole of magnitude 1.05.*\(strict=True\)"):
+        hyst.evaluate(unstable, u, y, strict=True)
+
+
 def test_model_files_round_trip(tmp_path):
     model = first_order()
     model.save(tmp_path / "m.json", info={"made by": "test"})

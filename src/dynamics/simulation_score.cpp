@@ -55,6 +55,7 @@ SimulationScore score_simulation(const PeriodicSignals& input, const PeriodicSig
       throw Error(fmt::format("score: output channel {} is constant", c + 1));
   }
 
+  const auto ranges = channel_ranges(output);
   for (std::size_t r = 0; r < input.realisations; ++r) {
     const Eigen::MatrixXd u = realisation_record(input, r);
     const Eigen::MatrixXd simulated = simulate(u, u.topRows(Eigen::Index(input.samples)));
@@ -63,6 +64,7 @@ SimulationScore score_simulation(const PeriodicSignals& input, const PeriodicSig
                               simulated.rows(), simulated.cols(), u.rows(), p));
     if (!simulated.allFinite())
       throw Error(fmt::format("score: the simulation of realisation {} is not finite", r + 1));
+    count_runaway(simulated, ranges, r, score.runaway);
     for (std::size_t q = 0; q < input.periods; ++q) {
       const std::size_t first = q == 0 ? transient_samples : 0;
       for (std::size_t c = 0; c < p; ++c) {

@@ -1,5 +1,6 @@
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -76,6 +77,12 @@ InversePrandtlIshlinskii::InversePrandtlIshlinskii(const PrandtlIshlinskii& mode
     : forward_(model),
       partial_sums_(checked_partial_sums(model.params().weights)),
       inverse_(inverse_params(model.params(), partial_sums_)),
+      target_bound_([this] {
+        double weight_sum = 0.0;
+        for (const double weight : inverse_.params().weights)
+          weight_sum += std::abs(weight);
+        return 0.25 * std::numeric_limits<double>::max() / std::max(1.0, weight_sum);
+      }()),
       options_(options) {
   if (std::isnan(options.input_min) || std::isnan(options.input_max) ||
       options.input_min > options.input_max) {

@@ -48,6 +48,7 @@ inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
   const auto& p = inverse.inverse_operator().params().weights;
   const double offset = inverse.forward().params().offset;
   const auto& options = inverse.options();
+  const double bound = inverse.target_bound();
   std::vector<double>& w = state.play;
   const std::size_t m = r.size();
 
@@ -80,7 +81,12 @@ inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
 
   InverseReport report;
   for (std::size_t k = 0; k < targets.size(); ++k) {
-    const double v = targets[k] - offset;
+    // Beyond the bound where the sum would overflow: answered as the bound (as solve() does).
+    const double wanted = targets[k] - offset;
+    const double v = std::clamp(wanted, -bound, bound);
+    const InverseStatus bound_status = wanted > bound    ? InverseStatus::above_range
+                                       : wanted < -bound ? InverseStatus::below_range
+                                                         : InverseStatus::ok;
     const double w0 = stack.empty() ? w[0] : stack.back().c + stack.back().s * r[0];
     if (v != w0) {
       const double d = v > w0 ? 1.0 : -1.0;  // rising or falling
@@ -133,9 +139,9 @@ inline InverseReport invert_pi_batch(const InversePrandtlIshlinskii& inverse,
       output = below_total();
     }
     const double input = output;
-    InverseStatus status = InverseStatus::ok;
+    InverseStatus status = bound_status;
     double answer = input;
-    if (input < options.input_min) {
+    if (!(input >= options.input_min)) {
       answer = options.input_min;
       status = InverseStatus::below_range;
     } else if (input > options.input_max) {

@@ -387,6 +387,24 @@ JSON
   expect_error 1 "loop.json: params.linear.d[1][1]: hysteretic LFR: D(1, 1) = 0.5" -- \
     "$HYST" evaluate --model loop.json --data lfr.csv --input u --output y
 
+  # A pole of magnitude 1.0005 (the system's is 0.8): the free run grows, which evaluate says on
+  # one warning line (an error with --strict), and again in --json.
+  cat > unstable.json <<'JSON'
+{"model": "state_space", "version": 1,
+ "params": {"sample_time": 0.01, "a": [[1.0005]], "b": [[1.5]], "c": [[0.66]], "d": [[0]]}}
+JSON
+  run "$HYST" evaluate --model unstable.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --json
+  [ "$STATUS" -eq 0 ] || fail "evaluate of an unstable model: exit status $STATUS"
+  grep -q "^hyst: warning: unstable.json: the linear block has a pole of magnitude 1.0005, outside the unit circle" \
+    "$WORK/stderr" || fail "no instability warning: $(cat "$WORK/stderr")"
+  expect_stdout '"warnings": [' 'pole of magnitude 1.0005'
+  expect_error 1 "unstable.json: the linear block has a pole of magnitude 1.0005" "(--strict)" -- \
+    "$HYST" evaluate --model unstable.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --strict
+  expect_ok "$HYST" evaluate --model lag.json --data lag.csv --input u --output y \
+    --samples-per-period 64 --periodic --strict
+
   write_pi_model pi.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
   expect_error 1 "pi.json: model 'pi' is not a dynamic multi-input model (state_space, hysteretic_lfr)" -- \
     "$HYST" evaluate --model pi.json --data lag.csv --input u --output y

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -213,6 +214,28 @@ TEST(InverseGeneralizedPrandtlIshlinskii, JumpsBetweenEnvelopeInversesAtReversal
 }
 
 // Out-of-range targets: a status, a finite input, never an exception; input limits too.
+TEST(InverseGeneralizedPrandtlIshlinskii, NonFiniteTargetsNeverGiveNaN) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const TanhGpi model(test::msma_params());
+  const TanhIgpi limited(model, {.input_min = 0.0, .input_max = 8.0});
+  auto state = limited.state_at_rest(40.0);
+  const InverseSample first = limited.solve(state, 45.0);
+  ASSERT_EQ(first.status, InverseStatus::ok);
+  const InverseSample held = limited.solve(state, NAN);
+  EXPECT_EQ(held.status, InverseStatus::not_invertible);
+  EXPECT_EQ(held.input, first.input);
+  EXPECT_EQ(limited.solve(state, INFINITY).input, 8.0);
+  EXPECT_EQ(limited.solve(state, -INFINITY).input, 0.0);
+  const TanhIgpi unlimited(model);
+  auto free_state = unlimited.state_at_rest(40.0);
+  for (const double target : {1e308, kInf, -kInf, -1e308}) {
+    const InverseSample answer = unlimited.solve(free_state, target);
+    EXPECT_TRUE(std::isfinite(answer.input)) << target;
+    EXPECT_NE(answer.status, InverseStatus::ok) << target;
+  }
+  EXPECT_EQ(unlimited.solve(free_state, 40.0).status, InverseStatus::ok);
+}
+
 TEST(InverseGeneralizedPrandtlIshlinskii, SaturatesWithAStatus) {
   const TanhGpi model(test::msma_params());
   const TanhIgpi inverse(model);

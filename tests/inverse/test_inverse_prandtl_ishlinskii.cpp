@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -179,6 +180,59 @@ TEST(InversePrandtlIshlinskii, ReportsSaturationInsteadOfThrowing) {
   EXPECT_EQ(inverse.solve(fresh, -5.0).status, InverseStatus::below_range);
   EXPECT_EQ(inverse.solve(fresh, 0.0).status, InverseStatus::ok);
   EXPECT_EQ(to_string(InverseStatus::above_range), "above_range");
+}
+
+// A NaN target holds the last input and leaves the state as it was; +-inf and 1e308 (where the
+// inverse operator's sum would overflow) are answered as the target bound, then limited.
+TEST(InversePrandtlIshlinskii, NonFiniteAndOverflowingTargetsNeverGiveNaN) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto model = reference_model();
+  for (const double limit : {1.0, kInf}) {
+    const InversePrandtlIshlinskii inverse(model, {-limit, limit});
+    auto state = inverse.initial_state();
+    const InverseSample first = inverse.solve(state, 0.3);
+    ASSERT_EQ(first.status, InverseStatus::ok);
+    const auto before = state.play;
+    const InverseSample held = inverse.solve(state, NAN);
+    EXPECT_EQ(held.status, InverseStatus::not_invertible);
+    EXPECT_EQ(held.input, first.input);
+    EXPECT_EQ(state.play, before);
+    for (const double target : {1e308, kInf, -1e308, -kInf}) {
+      auto from = state;
+      const InverseSample answer = inverse.solve(from, target);
+      EXPECT_TRUE(std::isfinite(answer.input)) << limit << " " << target;
+      EXPECT_EQ(answer.status,
+                target > 0 ? InverseStatus::above_range : InverseStatus::below_range);
+      if (std::isfinite(limit)) {
+        EXPECT_EQ(answer.input, target > 0 ? limit : -limit);
+      }
+      // Rising to the bound moves every play to bound -+ rh_j: v = sum_j ph_j (bound - rh_j).
+      if (!std::isfinite(limit) && target > 0) {
+        const auto& p = inverse.inverse_operator().params();
+        double expected = 0.0;
+        for (std::size_t j = 0; j < p.weights.size(); ++j)
+          expected += p.weights[j] * (inverse.target_bound() - p.thresholds[j]);
+        EXPECT_NEAR(answer.input, expected, 1e-12 * std::abs(expected));
+      }
+      EXPECT_TRUE(std::isfinite(inverse.solve(from, 0.5).input));
+    }
+  }
+  // The batch inverse of `hyst invert` gives the same answers.
+  const nlohmann::json document = {
+      {"model", "pi"},
+      {"version", 1},
+      {"params", {{"thresholds", model.params().thresholds}, {"weights", model.params().weights}}}};
+  const auto batch = model_from_json(document, "test")->inverse({-INFINITY, INFINITY});
+  const std::vector<double> targets{0.3, 1e308, -1e308, 0.5};
+  std::vector<double> inputs(targets.size()), expected(targets.size());
+  const InversePrandtlIshlinskii inverse(model);
+  auto state = inverse.initial_state();
+  const auto expected_report = invert(inverse, state, targets, expected);
+  const auto report = batch->invert(targets, inputs);
+  EXPECT_EQ(report.limited_samples, 2u);
+  EXPECT_EQ(expected_report.limited_samples, 2u);
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    EXPECT_NEAR(inputs[k], expected[k], 1e-12 * std::abs(expected[k])) << k;
 }
 
 // Equal weights c on equally spaced thresholds r_j = j h: S_j = c (j + 1), so in closed form

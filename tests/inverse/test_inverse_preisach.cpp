@@ -105,6 +105,20 @@ TEST(InversePreisach, RelayGridAnswersWithTheNearestReachableOutput) {
   EXPECT_LT(sample.input, model.everett().thresholds()[1]);
 }
 
+TEST(InversePreisach, ANaNTargetHoldsTheLastInput) {
+  const auto model = gaussian_model();
+  const InverseGaussianPreisach inverse(model, {.input_min = -0.5, .input_max = 0.6});
+  auto state = inverse.initial_state();
+  const InverseSample first = inverse.solve(state, 0.1);
+  const double output = model.output(state);
+  const InverseSample held = inverse.solve(state, NAN);
+  EXPECT_EQ(held.status, InverseStatus::not_invertible);
+  EXPECT_EQ(held.input, first.input);
+  EXPECT_EQ(model.output(state), output);
+  EXPECT_EQ(inverse.solve(state, INFINITY).input, 0.6);
+  EXPECT_EQ(inverse.solve(state, -INFINITY).input, -0.5);
+}
+
 TEST(InversePreisach, TargetsOutOfReachAreLimitedWithAStatus) {
   const auto model = gaussian_model();
   const InverseGaussianPreisach inverse(model, {.input_min = -0.5, .input_max = 0.6});

@@ -59,6 +59,19 @@ TEST(MonotoneInverse, SaturatesAtTheInputLimits) {
   EXPECT_EQ(low.input, -1.0);
 }
 
+TEST(MonotoneInverse, NonFiniteTargetsNeverGiveNaN) {
+  const BoucWen model(BoucWen::Params{});
+  const MonotoneInverse<BoucWen> inverse(model, -1.0, 1.0);
+  MonotoneInverse<BoucWen>::State state{model.initial_state(), 0.0};
+  const auto first = inverse.solve(state, 0.2);
+  ASSERT_EQ(first.status, InverseStatus::ok);
+  const auto held = inverse.solve(state, NAN);
+  EXPECT_EQ(held.status, InverseStatus::not_invertible);
+  EXPECT_EQ(held.input, first.input);
+  EXPECT_EQ(inverse.solve(state, INFINITY).input, 1.0);
+  EXPECT_EQ(inverse.solve(state, -INFINITY).input, -1.0);
+}
+
 TEST(MonotoneInverse, UnboundedRangeByDefaultInRegistryUse) {
   // Infinite limits (the registry's default): the bracket grows until it holds the target.
   const BoucWen model(BoucWen::Params{});

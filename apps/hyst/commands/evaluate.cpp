@@ -10,6 +10,7 @@
 
 #include "../dynamic_data.hpp"
 #include "commands.hpp"
+#include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/io/json_text.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
@@ -24,6 +25,7 @@ struct EvaluateOptions {
   bool periodic = false;
   std::size_t transient = 0;
   bool json = false;
+  bool strict = false;
 };
 
 //! The dynamic MIMO models that can be scored here.
@@ -52,6 +54,11 @@ SimulationScore score(const SystemModel& model, const PeriodicExperiment& experi
                               experiment.output, options);
 }
 
+const StateSpace& linear_block(const SystemModel& model) {
+  if (const auto* linear = std::get_if<StateSpace>(&model)) return *linear;
+  return std::get<AnyHystereticLfr>(model).linear();
+}
+
 std::string describe(const SystemModel& model) {
   if (const auto* linear = std::get_if<StateSpace>(&model))
     return fmt::format("state_space: {} states, {} inputs, {} outputs", linear->order(),
@@ -78,8 +85,14 @@ void run(const EvaluateOptions& options) {
   const auto experiments = read_experiments(options.data);
   const auto& experiment = experiments.at(0);
   const auto result = score(model, experiment, {options.periodic, options.transient});
+  const auto warnings = free_run_warnings(linear_block(model), result.runaway);
+  if (options.strict && !warnings.empty())
+    throw Error(fmt::format("{}: {} (--strict)", options.model, warnings.front()));
+  for (const auto& warning : warnings)
+    warn(fmt::format("{}: {}", options.model, warning));
   if (options.json) {
     auto out = score_json(result);
+    out["warnings"] = warnings;
     out["model"] = options.model;
     out["periodic"] = options.periodic;
     out["transient_samples"] = options.transient;
@@ -118,9 +131,14 @@ void add_evaluate_command(CLI::App& app) {
       ->capture_default_str()
       ->excludes(periodic);
   command->add_flag("--json", options->json, "Print JSON instead of text");
+  command->add_flag("--strict", options->strict,
+                    "Exit with an error instead of a warning when the model is unstable in free "
+                    "run (a pole outside the unit circle, outputs that ran away)");
   command->footer(R"(Per output channel: RMSE of the simulated output (free run) averaged over
 realisations and periods, and that RMSE relative to the channel's standard deviation; then their
-mean over the channels.
+mean over the channels. A warning (an error with --strict) says when the free run cannot be
+trusted: a pole of the linear block outside the unit circle, or simulated samples more than 10
+times their channel's measured range beyond it.
 Example:
   hyst evaluate --model fsm.json --input-npy u_200mV_test.npy --output-npy y_200mV_test.npy \
       --layout N,channel,realisation,period --periodic)");

@@ -16,7 +16,8 @@ enum class InverseStatus : unsigned char {
   below_range,  //!< the input was raised to its lower limit
   above_range,  //!< the input was lowered to its upper limit
   //! the output is not monotone in the input over the admissible range from this state (e.g. a
-  //! butterfly loop across its vertex): no unique input exists; the previous input was held
+  //! butterfly loop across its vertex), or the target is NaN: no unique input exists; the
+  //! previous input was held
   not_invertible,
 };
 

@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 
+#include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/periodic_signals.hpp"
 #include "hyst/dynamics/state_space.hpp"
 
@@ -34,6 +35,7 @@ struct SimulationScore {
   double mean_rmse = 0.0;
   double mean_relative_error = 0.0;
   std::size_t scored_samples = 0;  //!< per channel, over every realisation and period
+  RunawayCount runaway;            //!< simulated samples far outside the measured range
 };
 
 struct ScoreOptions {

@@ -99,12 +99,13 @@ class BracketedInverseBase {
 };
 
 //! The input in [v_min, v_max] where the non-decreasing map `y` reaches `target`, starting from
-//! the bracket split at `now` (clamped into the range; the output there is y(now)).
-//! Precondition: `target` is finite.
+//! the bracket split at `now` (clamped into the range; the output there is y(now)). A NaN target
+//! has no input: `now` is held (status not_invertible); +-inf is out of reach at the limit.
 template <class Map>
 InverseSample bracketed_search(const BracketedSearch& search, Map&& y, double now,
                                double target) noexcept {
   now = std::clamp(now, search.input_min, search.input_max);
+  if (std::isnan(target)) return {now, InverseStatus::not_invertible};
   const double y_now = y(now);
   if (y_now == target) return {now, InverseStatus::ok};
   double lo = search.input_min;

@@ -88,7 +88,9 @@ class InverseGeneralizedPrandtlIshlinskii {
   //! The input that makes the model produce `target`, and whether it had to be limited.
   //! No allocation, never throws.
   InverseSample solve(State& state, double target) const noexcept {
-    const double u = inverse_pi_.step(state.pi, target);
+    // A NaN or overflowing target is the inverse PI's to answer (held, or its bound).
+    const InverseSample classical = inverse_pi_.solve(state.pi, target);
+    const double u = classical.input;
     if (u > state.u) {
       state.branch = LoopBranch::ascending;
     } else if (u < state.u) {
@@ -99,8 +101,10 @@ class InverseGeneralizedPrandtlIshlinskii {
     const InverseSample sample = state.branch == LoopBranch::ascending
                                      ? E::inverse(params.ascending.data(), u)
                                      : E::inverse(params.descending.data(), u);
-    if (sample.input < options_.input_min) return {options_.input_min, InverseStatus::below_range};
+    if (!(sample.input >= options_.input_min))  // NaN cannot pass
+      return {options_.input_min, InverseStatus::below_range};
     if (sample.input > options_.input_max) return {options_.input_max, InverseStatus::above_range};
+    if (classical.status != InverseStatus::ok) return {sample.input, classical.status};
     return sample;
   }
 

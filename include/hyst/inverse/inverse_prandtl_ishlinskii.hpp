@@ -16,7 +16,12 @@
 //!
 //! Optional input limits [v_min, v_max] model an actuator's admissible input: a target that needs
 //! more is answered with the limit and a status, never an exception.
+//!
+//! No target makes the answer NaN: a NaN target holds the last input (status not_invertible,
+//! the state unchanged), and a target beyond +-target_bound() (+-inf, 1e308: where the inverse
+//! operator's sum would overflow) is answered as that bound (status above_range / below_range).
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -54,11 +59,18 @@ class InversePrandtlIshlinskii {
 
   //! The input that makes the model produce `target`, and whether it had to be limited.
   InverseSample solve(State& state, double target) const noexcept {
-    const double input = inverse_.step(state, target - forward_.params().offset);
-    if (input < options_.input_min) return {options_.input_min, InverseStatus::below_range};
-    if (input > options_.input_max) return {options_.input_max, InverseStatus::above_range};
-    return {input, InverseStatus::ok};
+    const double shifted = target - forward_.params().offset;
+    if (std::isnan(shifted)) return limited(inverse_.output(state), InverseStatus::not_invertible);
+    if (shifted > target_bound_)
+      return limited(inverse_.step(state, target_bound_), InverseStatus::above_range);
+    if (shifted < -target_bound_)
+      return limited(inverse_.step(state, -target_bound_), InverseStatus::below_range);
+    return limited(inverse_.step(state, shifted), InverseStatus::ok);
   }
+
+  //! Largest |y - y_off| the inverse operator takes as it is: a quarter of the largest double
+  //! over sum_j |ph_j|, so that v = sum_j ph_j wh_j stays finite.
+  double target_bound() const { return target_bound_; }
 
   //! solve() without the status, so the inverse also runs wherever a model does.
   double step(State& state, double target) const noexcept { return solve(state, target).input; }
@@ -67,7 +79,19 @@ class InversePrandtlIshlinskii {
   PrandtlIshlinskii forward_;
   std::vector<double> partial_sums_;  // S_j; declared before inverse_, which is built from it
   PrandtlIshlinskii inverse_;
+  double target_bound_;
   Options options_;
+
+  // The input within [v_min, v_max], with the status of the limit it hit; written so that NaN
+  // cannot pass (it becomes v_min).
+  InverseSample limited(double input, InverseStatus status) const noexcept {
+    const bool ok = status == InverseStatus::ok;
+    if (!(input >= options_.input_min))
+      return {options_.input_min, ok ? InverseStatus::below_range : status};
+    if (input > options_.input_max)
+      return {options_.input_max, ok ? InverseStatus::above_range : status};
+    return {input, status};
+  }
 };
 
 }  // namespace hyst

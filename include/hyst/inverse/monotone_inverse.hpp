@@ -59,14 +59,18 @@ class MonotoneInverse {
   const M& model() const { return model_; }
 
   //! The input that makes the model produce `target` from `state`, which is advanced with it.
-  //! Never allocates; at most max_expansions() + 604 model steps. Precondition: `target` is
-  //! finite.
+  //! Never allocates; at most max_expansions() + 604 model steps. A NaN target holds the last
+  //! input (status not_invertible); +-inf is out of reach in its direction.
   InverseSample solve(State& state, double target) const {
     const auto output_at = [&](double input) {
       auto probe = state.model;
       return model_.step(probe, input);
     };
     const double start = std::clamp(state.input, input_min_, input_max_);
+    if (std::isnan(target)) {
+      advance(state, start);
+      return {start, InverseStatus::not_invertible};
+    }
     const double y_start = output_at(start);
     if (y_start == target) {
       advance(state, start);
