@@ -39,21 +39,23 @@ PeriodicSignals periodic_signals(const py::object& value, const std::string& lay
   const AnyArray array = as_bounded_array(value, name);
   if (array.ndim() == 0)
     throw Error(fmt::format("{} is a single number; expected an array of periodic signals", name));
-  io::NumpyArray values;
-  for (py::ssize_t d = 0; d < array.ndim(); ++d)
-    values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
-  values.values.assign(array.data(), array.data() + array.size());
   // The layout names as many axes as the array has: its first ones.
   std::string used;
   std::size_t axes = 0;
-  for (std::size_t start = 0; start <= layout.size() && axes < values.shape.size(); ++axes) {
+  for (std::size_t start = 0; start <= layout.size() && axes < std::size_t(array.ndim()); ++axes) {
     const std::size_t comma = std::min(layout.find(',', start), layout.size());
     used += (used.empty() ? "" : ",") + layout.substr(start, comma - start);
     start = comma + 1;
   }
+  // Two copies of the values: the array's, then the arrangement's.
   return naming_failed_allocation(
-      fmt::format("arranging {} ({} values) as periodic signals", name, array.size()),
-      [&] { return io::arrange_periodic(values, used, name); });
+      fmt::format("arranging {} ({} values) as periodic signals", name, array.size()), [&] {
+        io::NumpyArray values;
+        for (py::ssize_t d = 0; d < array.ndim(); ++d)
+          values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
+        values.values.assign(array.data(), array.data() + array.size());
+        return io::arrange_periodic(values, used, name);
+      });
 }
 
 std::vector<PeriodicExperiment> experiments_of(const py::sequence& pairs,

@@ -271,3 +271,22 @@ def test_simulation_error_fits_refuse_non_finite_samples_in_the_warm_up_period(f
     assert str(error.value).endswith(
         f"experiment 0 {which}: the value at (N = 5, channel = 0, realisation = 0, period = 0) "
         f"is {value}; every sample must be finite")
+
+
+def test_a_failed_allocation_is_a_memory_error_naming_what_was_built():
+    # In a child process whose address space ends 300 MB after the 256 MiB array is made: the
+    # copies of it that arranging the periodic signals makes cannot both fit.
+    script = """
+import resource, numpy as np, hyst
+u = np.ones((1 << 25, 1))
+size = int(open("/proc/self/status").read().split("VmSize:")[1].split()[0]) * 1024
+resource.setrlimit(resource.RLIMIT_AS, (size + 300_000_000, resource.RLIM_INFINITY))
+try:
+    hyst.evaluate(hyst.StateSpace([[0.5]], [[1.0]], [[1.0]], [[0.0]]), u, u)
+except MemoryError as error:
+    print(error)
+"""
+    child = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                           timeout=60, env=os.environ)
+    assert child.stdout.strip() == ("out of memory while arranging input (33554432 values) as "
+                                    "periodic signals"), child.stderr
