@@ -10,6 +10,11 @@
 namespace hyst {
 
 LfrMatrices::LfrMatrices(const StateSpace& linear, std::size_t inputs, std::size_t feedback) {
+  if (linear.order() > kMaxLfrOrder)
+    throw Error(fmt::format("hysteretic LFR: the linear block has {} states, more than the limit "
+                            "of {}",
+                            linear.order(), kMaxLfrOrder),
+                "linear.a");
   if (inputs == 0)
     throw Error("hysteretic LFR: it needs at least one input u (the linear block's first inputs)",
                 "inputs");

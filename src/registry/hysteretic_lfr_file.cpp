@@ -65,14 +65,6 @@ FeedbackModels feedback_models(const std::vector<const DynamicModel*>& feedback)
   return result;
 }
 
-void require_lfr_order(const StateSpace& linear) {
-  if (linear.order() > io::limits::kMaxLfrOrder)
-    throw Error(fmt::format("hysteretic LFR: the linear block has {} states, more than the limit "
-                            "of {}",
-                            linear.order(), io::limits::kMaxLfrOrder),
-                "linear.a");
-}
-
 std::size_t linear_parameters(const StateSpace& linear, std::size_t feedback) {
   const auto& p = linear.params();
   const auto q = std::size_t(feedback);
@@ -99,7 +91,6 @@ AnyHystereticLfr::AnyHystereticLfr(AnyHystereticLfrModel model, nlohmann::json f
 AnyHystereticLfr::AnyHystereticLfr(StateSpace linear, std::size_t inputs,
                                    const std::vector<const DynamicModel*>& feedback)
     : AnyHystereticLfr([&] {
-        require_lfr_order(linear);
         auto parts = feedback_models(feedback);
         auto model = std::visit(
             [&](const auto& first) -> AnyHystereticLfrModel {
@@ -113,7 +104,6 @@ AnyHystereticLfr::AnyHystereticLfr(StateSpace linear, std::size_t inputs,
 
 AnyHystereticLfr AnyHystereticLfr::hammerstein(const StateSpace& linear,
                                                const std::vector<const DynamicModel*>& blocks) {
-  require_lfr_order(linear);
   auto parts = feedback_models(blocks);
   auto model = std::visit(
       [&](const auto& first) -> AnyHystereticLfrModel {

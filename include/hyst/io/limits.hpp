@@ -64,10 +64,4 @@ inline constexpr std::size_t kMaxFitRecords = 1000;
 //! score; the fits make 6 plays.
 inline constexpr std::size_t kMaxLfrChannelParameters = 1000;
 
-//! Most states of a hysteretic LFR's linear block (model files, Python): 100, the most a
-//! state-space fit makes. Its search for the periodic state may run up to 1 000 periods of n^2
-//! operations per sample: at 100 states about a minute per realisation of the FSM test set at the
-//! worst; a dense linear model of 500 states scores in 6 s, but as an LFR block could take hours.
-inline constexpr std::size_t kMaxLfrOrder = 100;
-
 }  // namespace hyst::io::limits

@@ -192,6 +192,11 @@ class AcceptedStepLimit final : public ceres::IterationCallback {
 void check_experiments(const StateSpace& linear, std::span<const PeriodicExperiment> experiments,
                        const std::string& fit) {
   if (experiments.empty()) throw Error(fit + ": no experiment");
+  if (linear.order() > kMaxLfrOrder)
+    throw Error(
+        fmt::format("{}: the linear model has {} states, more than the limit of {} of a "
+                    "hysteretic LFR's linear block",
+                    fit, linear.order(), kMaxLfrOrder));
   for (std::size_t e = 0; e < experiments.size(); ++e) {
     const auto& x = experiments[e];
     if (x.input.channels != linear.inputs() || x.output.channels != linear.outputs())
