@@ -44,7 +44,8 @@ PeriodicSignals periodic_signals(const py::object& value, const std::string& lay
   std::size_t axes = 0;
   for (std::size_t start = 0; start <= layout.size() && axes < std::size_t(array.ndim()); ++axes) {
     const std::size_t comma = std::min(layout.find(',', start), layout.size());
-    used += (used.empty() ? "" : ",") + layout.substr(start, comma - start);
+    if (!used.empty()) used += ',';
+    used.append(layout, start, comma - start);
     start = comma + 1;
   }
   // Two copies of the values: the array's, then the arrangement's.
@@ -56,6 +57,14 @@ PeriodicSignals periodic_signals(const py::object& value, const std::string& lay
         values.values.assign(array.data(), array.data() + array.size());
         return io::arrange_periodic(values, used, name);
       });
+}
+
+//! A record (samples, channels) as a matrix; None and arrays above the limit of files are refused
+//! by `name` before the record is copied.
+Eigen::MatrixXd bounded_record(const py::object& value, const std::string& name) {
+  const AnyArray array = as_bounded_array(value, name);
+  return naming_failed_allocation(fmt::format("copying {} ({} values)", name, array.size()),
+                                  [&] { return array.cast<Eigen::MatrixXd>(); });
 }
 
 std::vector<PeriodicExperiment> experiments_of(const py::sequence& pairs,
@@ -242,11 +251,12 @@ void bind_dynamics(py::module_& module) {
       .def_property_readonly("outputs", &StateSpace::outputs, "Number of outputs p")
       .def(
           "simulate",
-          [](const StateSpace& m, const Eigen::MatrixXd& input,
+          [](const StateSpace& m, const py::object& input,
              const std::optional<Eigen::VectorXd>& initial_state) {
+            const auto u = bounded_record(input, "input");
             auto state = initial_state ? m.make_state(*initial_state) : m.initial_state();
             py::gil_scoped_release release;
-            return m.simulate(input, state);
+            return m.simulate(u, state);
           },
           "input"_a, "initial_state"_a = py::none(),
           "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`.")
@@ -377,16 +387,18 @@ void bind_dynamics(py::module_& module) {
       .def_property_readonly("parameter_count", &AnyHystereticLfr::parameter_count)
       .def(
           "simulate",
-          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& input) {
+          [](const AnyHystereticLfr& model, const py::object& input) {
+            const auto u = bounded_record(input, "input");
             py::gil_scoped_release release;
-            return model.simulate(input);
+            return model.simulate(u);
           },
           "input"_a, "Outputs (N, p) for inputs (N, m) from rest.")
       .def(
           "simulate_periodic",
-          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& one_period) {
+          [](const AnyHystereticLfr& model, const py::object& one_period) {
+            const auto u = bounded_record(one_period, "one_period");
             py::gil_scoped_release release;
-            return model.simulate_from_periodic_state(one_period, one_period);
+            return model.simulate_from_periodic_state(u, u);
           },
           "one_period"_a, "Outputs over one period (N, p) in periodic steady state.")
       .def(

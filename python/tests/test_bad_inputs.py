@@ -208,6 +208,10 @@ def test_arrays_beyond_the_limit_of_files_are_refused_before_they_are_copied():
         hyst.evaluate(lag(), huge, huge)
     with pytest.raises(hyst.Error, match="more than the limit of 33554432 values"):
         example_model().simulate(np.empty((1 << 25) + 1))  # pages never touched
+    with pytest.raises(hyst.Error, match="^input has 201326592 values, more than the limit"):
+        lag().simulate(np.broadcast_to(1.0, (1 << 26, 3)))
+    with pytest.raises(hyst.Error, match=r"^input is missing \(None\)"):
+        lag().simulate(None)
 
 
 def test_fit_counts_have_limits():
@@ -245,6 +249,11 @@ def test_model_sizes_have_limits():
         "thresholds": [0.0], "weights": [1.0]}})
     with pytest.raises(hyst.Error, match="linear block has 101 states, more than the limit of 100"):
         hyst.HystereticLfr(block, 1, [one_play])
+    # A fit from such a linear model is refused before it starts, not when its result is built.
+    wide = hyst.StateSpace(np.zeros((n, n)), np.ones((n, 1)), np.ones((1, n)), [[0.0]])
+    with pytest.raises(hyst.Error, match="the linear model has 101 states, more than the limit of "
+                                         "100 of a hysteretic LFR's linear block"):
+        hyst.fit_hysteretic_lfr(wide, [lag_experiment()])
 
 
 def test_a_diverging_loop_says_so_instead_of_nan():
