@@ -22,6 +22,7 @@
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/io/numpy_file.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
+#include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/state_space_file.hpp"
 
 namespace hyst::python {
@@ -31,35 +32,52 @@ constexpr const char* kDefaultLayout = "N,channel,realisation,period";
 
 using AnyArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-//! A numpy array of any dimension as periodic signals, its axes named by `layout`.
-PeriodicSignals periodic_signals(const AnyArray& array, const std::string& layout,
+//! A numpy array of any dimension as periodic signals, its axes named by `layout`; None and
+//! arrays above the limit of files are refused by `name` before anything is copied.
+PeriodicSignals periodic_signals(const py::object& value, const std::string& layout,
                                  const std::string& name) {
-  io::NumpyArray values;
-  for (py::ssize_t d = 0; d < array.ndim(); ++d)
-    values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
-  values.values.assign(array.data(), array.data() + array.size());
+  const AnyArray array = as_bounded_array(value, name);
+  if (array.ndim() == 0)
+    throw Error(fmt::format("{} is a single number; expected an array of periodic signals", name));
   // The layout names as many axes as the array has: its first ones.
   std::string used;
   std::size_t axes = 0;
-  for (std::size_t start = 0; start <= layout.size() && axes < values.shape.size(); ++axes) {
+  for (std::size_t start = 0; start <= layout.size() && axes < std::size_t(array.ndim()); ++axes) {
     const std::size_t comma = std::min(layout.find(',', start), layout.size());
-    used += (used.empty() ? "" : ",") + layout.substr(start, comma - start);
+    if (!used.empty()) used += ',';
+    used.append(layout, start, comma - start);
     start = comma + 1;
   }
-  return io::arrange_periodic(values, used, name);
+  // Two copies of the values: the array's, then the arrangement's.
+  return naming_failed_allocation(
+      fmt::format("arranging {} ({} values) as periodic signals", name, array.size()), [&] {
+        io::NumpyArray values;
+        for (py::ssize_t d = 0; d < array.ndim(); ++d)
+          values.shape.push_back(static_cast<std::size_t>(array.shape(d)));
+        values.values.assign(array.data(), array.data() + array.size());
+        return io::arrange_periodic(values, used, name);
+      });
+}
+
+//! A record (samples, channels) as a matrix; None and arrays above the limit of files are refused
+//! by `name` before the record is copied.
+Eigen::MatrixXd bounded_record(const py::object& value, const std::string& name) {
+  const AnyArray array = as_bounded_array(value, name);
+  return naming_failed_allocation(fmt::format("copying {} ({} values)", name, array.size()),
+                                  [&] { return array.cast<Eigen::MatrixXd>(); });
 }
 
 std::vector<PeriodicExperiment> experiments_of(const py::sequence& pairs,
                                                const std::string& layout) {
+  require_fit_record_count(pairs.size());
   std::vector<PeriodicExperiment> experiments;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const auto pair = pairs[i].cast<py::sequence>();
     if (pair.size() != 2)
       throw Error(fmt::format("experiments[{}]: expected an (input, output) pair", i));
-    experiments.push_back({periodic_signals(pair[0].cast<AnyArray>(), layout,
-                                            fmt::format("experiments[{}] input", i)),
-                           periodic_signals(pair[1].cast<AnyArray>(), layout,
-                                            fmt::format("experiments[{}] output", i))});
+    experiments.push_back(
+        {periodic_signals(pair[0], layout, fmt::format("experiments[{}] input", i)),
+         periodic_signals(pair[1], layout, fmt::format("experiments[{}] output", i))});
   }
   return experiments;
 }
@@ -117,15 +135,18 @@ const StateSpace& linear_block(const AnyHystereticLfr& model) {
 }
 
 template <class Model>
-py::dict evaluate_model(const Model& model, const AnyArray& input, const AnyArray& output,
+py::dict evaluate_model(const Model& model, const py::object& input, const py::object& output,
                         const std::string& layout, bool periodic, std::size_t transient,
                         bool strict) {
   const auto u = periodic_signals(input, layout, "input");
   const auto y = periodic_signals(output, layout, "output");
-  const auto score = [&] {
-    py::gil_scoped_release release;
-    return score_model(model, u, y, {periodic, transient});
-  }();
+  const auto score =
+      naming_failed_allocation(fmt::format("scoring the model ({} states) on {} input values",
+                                           model.order(), u.values.size()),
+                               [&] {
+                                 py::gil_scoped_release release;
+                                 return score_model(model, u, y, {periodic, transient});
+                               });
   const auto warnings = free_run_warnings(linear_block(model), score.runaway);
   if (strict && !warnings.empty()) throw Error(warnings.front() + " (strict=True)");
   auto out = score_dict(score);
@@ -142,10 +163,13 @@ void def_hysteresis_fit(py::module_& module, const char* name, Fit fit, const ch
   const auto run = [fit](const StateSpace& linear, const py::sequence& experiments,
                          const std::string& layout, const Options& options) {
     const auto data = experiments_of(experiments, layout);
-    auto result = [&] {
-      py::gil_scoped_release release;
-      return fit(linear, data, options);
-    }();
+    auto result = naming_failed_allocation(
+        fmt::format("fitting a {}-state model with {} thresholds per channel to {} experiments",
+                    linear.order(), options.threshold_fractions.size(), data.size()),
+        [&] {
+          py::gil_scoped_release release;
+          return fit(linear, data, options);
+        });
     return py::make_tuple(any_hysteretic_lfr(result.model), std::move(result.report));
   };
   const auto options = [](const std::vector<double>& threshold_fractions, bool fit_poles,
@@ -227,11 +251,12 @@ void bind_dynamics(py::module_& module) {
       .def_property_readonly("outputs", &StateSpace::outputs, "Number of outputs p")
       .def(
           "simulate",
-          [](const StateSpace& m, const Eigen::MatrixXd& input,
+          [](const StateSpace& m, const py::object& input,
              const std::optional<Eigen::VectorXd>& initial_state) {
+            const auto u = bounded_record(input, "input");
             auto state = initial_state ? m.make_state(*initial_state) : m.initial_state();
             py::gil_scoped_release release;
-            return m.simulate(input, state);
+            return m.simulate(u, state);
           },
           "input"_a, "initial_state"_a = py::none(),
           "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`.")
@@ -317,10 +342,13 @@ void bind_dynamics(py::module_& module) {
         options.subspace_block_rows = subspace_block_rows;
         options.max_pole_radius = max_pole_radius;
         options.progress = progress_callback(progress);
-        auto fit = [&] {
-          py::gil_scoped_release release;
-          return fit_state_space(bla, options);
-        }();
+        auto fit = naming_failed_allocation(
+            fmt::format("fitting a state-space model of order {} to {} lines", order,
+                        bla.lines.size()),
+            [&] {
+              py::gil_scoped_release release;
+              return fit_state_space(bla, options);
+            });
         return py::make_tuple(std::move(fit.model), std::move(fit.report));
       },
       "bla"_a, "order"_a, "weighting"_a = "none", "max_iterations"_a = 200,
@@ -359,16 +387,18 @@ void bind_dynamics(py::module_& module) {
       .def_property_readonly("parameter_count", &AnyHystereticLfr::parameter_count)
       .def(
           "simulate",
-          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& input) {
+          [](const AnyHystereticLfr& model, const py::object& input) {
+            const auto u = bounded_record(input, "input");
             py::gil_scoped_release release;
-            return model.simulate(input);
+            return model.simulate(u);
           },
           "input"_a, "Outputs (N, p) for inputs (N, m) from rest.")
       .def(
           "simulate_periodic",
-          [](const AnyHystereticLfr& model, const Eigen::MatrixXd& one_period) {
+          [](const AnyHystereticLfr& model, const py::object& one_period) {
+            const auto u = bounded_record(one_period, "one_period");
             py::gil_scoped_release release;
-            return model.simulate_from_periodic_state(one_period, one_period);
+            return model.simulate_from_periodic_state(u, u);
           },
           "one_period"_a, "Outputs over one period (N, p) in periodic steady state.")
       .def(

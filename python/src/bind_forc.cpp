@@ -10,12 +10,14 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/forc_fit.hpp"
 
 namespace hyst::python {
 
 std::vector<PythonCurve> curves_from_python(const py::sequence& sequence, std::string_view what) {
   std::vector<PythonCurve> curves;
+  std::size_t values = 0;  // of every curve, bounded like one array
   for (std::size_t n = 0; n < sequence.size(); ++n) {
     const py::object item = sequence[n];
     const auto name = fmt::format("{}[{}]", what, n);
@@ -29,8 +31,18 @@ std::vector<PythonCurve> curves_from_python(const py::sequence& sequence, std::s
       throw Error(fmt::format("{} must be a pair (input, output) of arrays, got {} items", name,
                               pair.size()));
     }
-    curves.push_back({as_vector(pair[0].cast<InputArray>(), name + "[0] (input)"),
-                      as_vector(pair[1].cast<InputArray>(), name + "[1] (output)")});
+    const auto input_array = pair[0].cast<InputArray>();
+    const auto output_array = pair[1].cast<InputArray>();
+    const auto input = as_span(input_array, name + "[0] (input)");
+    const auto output = as_span(output_array, name + "[1] (output)");
+    values += input.size() + output.size();
+    if (values > io::limits::kMaxNumpyValues) {
+      throw Error(
+          fmt::format("{}: with {} the curves hold more than {} values together (the "
+                      "limit of one array)",
+                      what, name, io::limits::kMaxNumpyValues));
+    }
+    curves.push_back({{input.begin(), input.end()}, {output.begin(), output.end()}});
   }
   return curves;
 }

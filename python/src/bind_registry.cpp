@@ -476,15 +476,17 @@ void bind_registry(py::module_& module) {
           throw Error(fmt::format("model '{}' has no fit of several records (models with one: {})",
                                   name, names));
         }
+        require_fit_record_count(records.size());
         const auto options_json = python_to_json(options, "");
         const auto owned = curves_from_python(records, "records");
         const auto views = fit_records_of(owned);
         const std::vector<double> times = sample_times.value_or(std::vector<double>{});
         std::optional<FitOutcome> outcome;
-        {
-          py::gil_scoped_release release;
-          outcome.emplace(entry.fit_records(views, times, options_json));
-        }
+        naming_failed_allocation(fmt::format("fitting '{}' to {} records", name, views.size()),
+                                 [&] {
+                                   py::gil_scoped_release release;
+                                   outcome.emplace(entry.fit_records(views, times, options_json));
+                                 });
         return py::make_tuple(std::move(outcome->model), std::move(outcome->report));
       },
       "name"_a, "records"_a, "sample_times"_a = py::none(),

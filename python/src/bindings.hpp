@@ -3,7 +3,9 @@
 // JSON <-> Python objects, and one bind_* function per area of the library.
 
 #include <limits>
+#include <new>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,8 +30,28 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 //! else (lists, other dtypes, strided views) is converted once by numpy.
 using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-//! The samples of a one-dimensional array; throws hyst::Error naming `name` for other shapes.
+//! The samples of a one-dimensional array; throws hyst::Error naming `name` for other shapes and
+//! for more values than io::limits::kMaxNumpyValues (the limit of files).
 std::span<const double> as_span(const InputArray& array, std::string_view name);
+//! `value` as a float64 array of any dimension, checked before anything is copied: hyst::Error
+//! naming `name` for None ("input is missing (None)") and for more values than
+//! io::limits::kMaxNumpyValues.
+InputArray as_bounded_array(const py::object& value, std::string_view name);
+
+//! Raised as Python's MemoryError with its message: an allocation that failed while the library
+//! built something the message names, with its size.
+struct OutOfMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+//! `build()`, with a std::bad_alloc turned into OutOfMemory "out of memory while <what>".
+template <class Build>
+decltype(auto) naming_failed_allocation(std::string_view what, Build&& build) {
+  try {
+    return build();
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemory("out of memory while " + std::string(what));
+  }
+}
 //! The samples copied into a vector (for parameters, which the models keep).
 std::vector<double> as_vector(const InputArray& array, std::string_view name);
 //! A Python callable progress(done, total, current) as a ProgressCallback (empty for None),

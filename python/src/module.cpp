@@ -19,12 +19,33 @@
 
 namespace hyst::python {
 
+namespace {
+
+void require_bounded_size(py::ssize_t size, std::string_view name) {
+  if (static_cast<std::size_t>(size) > io::limits::kMaxNumpyValues) {
+    throw Error(fmt::format("{} has {} values, more than the limit of {} values of one array", name,
+                            size, io::limits::kMaxNumpyValues));
+  }
+}
+
+}  // namespace
+
 std::span<const double> as_span(const InputArray& array, std::string_view name) {
   if (array.ndim() != 1) {
     throw Error(
         fmt::format("{} must be a one-dimensional array, got {} dimensions", name, array.ndim()));
   }
+  require_bounded_size(array.size(), name);
   return {array.data(), static_cast<std::size_t>(array.shape(0))};
+}
+
+InputArray as_bounded_array(const py::object& value, std::string_view name) {
+  if (value.is_none()) throw Error(fmt::format("{} is missing (None); expected an array", name));
+  // Its size as it stands (a numpy array is not copied here), before a conversion to float64.
+  const auto array = py::array::ensure(value);
+  if (!array) throw Error(fmt::format("{} is not an array of numbers", name));
+  require_bounded_size(array.size(), name);
+  return value.cast<InputArray>();
 }
 
 std::vector<double> as_vector(const InputArray& array, std::string_view name) {
@@ -227,6 +248,8 @@ PYBIND11_MODULE(_core, module) {
       instance.attr("field") =
           error.field().empty() ? py::object(py::none()) : py::object(text(error.field()));
       PyErr_SetObject(error_type, instance.ptr());
+    } catch (const hyst::python::OutOfMemory& error) {
+      PyErr_SetString(PyExc_MemoryError, error.what());
     }
   });
 

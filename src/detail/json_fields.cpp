@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "hyst/io/limits.hpp"
+
 namespace hyst::detail {
 
 std::string describe_json(const nlohmann::json& value) {
@@ -85,12 +87,24 @@ double JsonFields::number_or(std::string_view key, double fallback) {
   return value ? json_number(*value, path_of(key)) : fallback;
 }
 
+namespace {
+
+void require_array_length(const nlohmann::json& array, const std::string& path) {
+  if (array.size() > io::limits::kMaxModelArrayValues) {
+    throw Error(fmt::format("{}: {} values, more than the limit of {} values of one array", path,
+                            array.size(), io::limits::kMaxModelArrayValues));
+  }
+}
+
+}  // namespace
+
 std::vector<double> JsonFields::numbers(std::string_view key) {
   const auto& value = require(key);
   if (!value.is_array()) {
     throw Error(fmt::format("{}: expected an array of numbers, got {}", path_of(key),
                             describe_json(value)));
   }
+  require_array_length(value, path_of(key));
   std::vector<double> numbers;
   numbers.reserve(value.size());
   for (std::size_t j = 0; j < value.size(); ++j) {
@@ -121,6 +135,7 @@ std::vector<std::size_t> JsonFields::counts(std::string_view key) {
     throw Error(fmt::format("{}: expected an array of whole numbers, got {}", path_of(key),
                             describe_json(value)));
   }
+  require_array_length(value, path_of(key));
   std::vector<std::size_t> counts;
   counts.reserve(value.size());
   for (std::size_t j = 0; j < value.size(); ++j) {

@@ -282,9 +282,11 @@ ErrorMetrics response_error(const FrequencyData& data, const StateSpace& model,
 void check_options(const BestLinearApproximation& bla, const StateSpaceFitOptions& options,
                    std::size_t block_rows) {
   if (bla.response.empty()) throw Error("state-space fit: the BLA has no line");
-  if (options.order < 1 || options.order > StateSpace::max_order)
-    throw Error(fmt::format("state-space fit: order {} must be in 1..{}", options.order,
-                            StateSpace::max_order));
+  if (options.order < 1 || options.order > kMaxStateSpaceFitOrder)
+    throw Error(
+        fmt::format("state-space fit: order {} must be in 1..{} (the limit of a fit's "
+                    "order)",
+                    options.order, kMaxStateSpaceFitOrder));
   if (block_rows <= options.order)
     throw Error(fmt::format("state-space fit: subspace block rows q = {} must exceed the order {}",
                             block_rows, options.order));

@@ -10,6 +10,11 @@
 namespace hyst {
 
 LfrMatrices::LfrMatrices(const StateSpace& linear, std::size_t inputs, std::size_t feedback) {
+  if (linear.order() > kMaxLfrOrder)
+    throw Error(fmt::format("hysteretic LFR: the linear block has {} states, more than the limit "
+                            "of {}",
+                            linear.order(), kMaxLfrOrder),
+                "linear.a");
   if (inputs == 0)
     throw Error("hysteretic LFR: it needs at least one input u (the linear block's first inputs)",
                 "inputs");
@@ -70,6 +75,18 @@ void throw_not_periodic(std::size_t iterations, double change, double tolerance)
                           "this input, or raise LfrPeriodicOptions::max_iterations",
                           iterations, change, tolerance),
               "max_iterations");
+}
+
+void throw_diverging(std::size_t period, double magnitude) {
+  const auto reached = std::isfinite(magnitude) ? fmt::format("{:.3g}", magnitude)
+                                                : std::string("values that are not finite");
+  throw Error(fmt::format("hysteretic LFR: the loop diverges: in period {} of the search for the "
+                          "periodic steady state the hysteresis outputs reach {} (the limit is "
+                          "{:g}); the feedback makes the loop unstable for this input (e.g. a "
+                          "negative hysteresis weight, or a feedback gain too large for the linear "
+                          "block)",
+                          period, reached, kMaxPeriodicMagnitude),
+              "feedback");
 }
 
 void require_hammerstein_blocks(std::size_t linear_inputs, std::size_t blocks) {

@@ -1,11 +1,25 @@
 #include "hyst/dynamics/periodic_signals.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "hyst/core/checks.hpp"
 #include "hyst/core/error.hpp"
 
 namespace hyst {
+
+void require_finite_signals(const PeriodicSignals& signals, std::string_view what) {
+  for (std::size_t r = 0; r < signals.realisations; ++r)
+    for (std::size_t p = 0; p < signals.periods; ++p)
+      for (std::size_t n = 0; n < signals.samples; ++n)
+        for (std::size_t c = 0; c < signals.channels; ++c)
+          if (const double value = signals(n, c, r, p); !std::isfinite(value))
+            throw Error(
+                fmt::format("{}: the value at (N = {}, channel = {}, realisation = {}, "
+                            "period = {}) is {}; every sample must be finite",
+                            what, n, c, r, p, value));
+}
 
 PeriodicSignals periodic_signals_from_columns(const std::vector<std::vector<double>>& columns,
                                               std::size_t samples_per_period,

@@ -32,6 +32,8 @@ SimulationScore score_simulation(const PeriodicSignals& input, const PeriodicSig
         fmt::format("score: a transient of {} samples leaves nothing of the first period "
                     "of {} samples",
                     transient_samples, input.samples));
+  require_finite_signals(input, "score: input");
+  require_finite_signals(output, "score: output");
   const std::size_t p = output.channels;
   SimulationScore score;
   score.channels.resize(p);

@@ -53,9 +53,17 @@ void require_sizes(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, const Eig
                             a.rows(), a.cols()),
                 std::string(a_name.field));
   if (a.rows() > Index(StateSpace::max_order))
-    throw Error(fmt::format("state space: order n = {} exceeds the maximum {}", a.rows(),
+    throw Error(fmt::format("state space: order n = {} is above the limit of {} states", a.rows(),
                             StateSpace::max_order),
                 std::string(a_name.field));
+  if (b.cols() > Index(StateSpace::max_channels))
+    throw Error(fmt::format("state space: {} inputs are above the limit of {}", b.cols(),
+                            StateSpace::max_channels),
+                std::string(b_name.field));
+  if (c.rows() > Index(StateSpace::max_channels))
+    throw Error(fmt::format("state space: {} outputs are above the limit of {}", c.rows(),
+                            StateSpace::max_channels),
+                "c");
   if (b.rows() != a.rows())
     throw Error(fmt::format("state space: {} has {} rows, {} has {}", b_name.symbol, b.rows(),
                             a_name.symbol, a.rows()),

@@ -17,6 +17,7 @@
 #include "hyst/identify/fit_quality.hpp"
 #include "hyst/identify/fitted_domain.hpp"
 #include "hyst/identify/reference_predictors.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
 
@@ -105,6 +106,13 @@ FittedDomain domain_of_fit_part(std::span<const double> input, std::span<const d
 }
 
 }  // namespace
+
+void require_fit_record_count(std::size_t count) {
+  if (count > io::limits::kMaxFitRecords)
+    throw Error(fmt::format("{} records, more than the limit of {} records of one fit", count,
+                            io::limits::kMaxFitRecords),
+                "records");
+}
 
 FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
   if (!entry.can_fit()) throw Error(fmt::format("model '{}' has no fitter", entry.name));

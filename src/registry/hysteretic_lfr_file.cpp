@@ -9,6 +9,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/state_space_file.hpp"
@@ -46,6 +47,11 @@ FeedbackModels feedback_models(const std::vector<const DynamicModel*>& feedback)
                               "model; every channel must be of one kind",
                               i, name, result.name),
                   fmt::format("feedback[{}].model", i));
+    if (model.parameter_count() > io::limits::kMaxLfrChannelParameters)
+      throw Error(fmt::format("hysteretic LFR: feedback[{}] has {} parameters, more than the "
+                              "limit of {} for one hysteresis channel",
+                              i, model.parameter_count(), io::limits::kMaxLfrChannelParameters),
+                  fmt::format("feedback[{}].params", i));
     result.name = name;
     result.models.push_back(entry.actuator_force->hysteresis(model));
     if (result.models.back().index() != result.models.front().index())
@@ -194,6 +200,9 @@ HystereticLfrFile hysteretic_lfr_from_json(const nlohmann::json& document,
       throw Error("params.feedback: expected an array of model objects");
     p.finish();
     StateSpace linear = state_space_from_params(*linear_json, "params.linear");
+    if (feedback_json->size() > StateSpace::max_channels)
+      throw Error(fmt::format("params.feedback: {} hysteresis channels, more than the limit of {}",
+                              feedback_json->size(), StateSpace::max_channels));
     std::vector<std::unique_ptr<DynamicModel>> owned;
     for (std::size_t i = 0; i < feedback_json->size(); ++i) {
       const auto path = fmt::format("params.feedback[{}]", i);

@@ -249,6 +249,7 @@ void set_records_fitter(ModelEntry& entry, FieldTable<Options> table, Fit fit) {
   entry.fit_records = [table = std::make_shared<const FieldTable<Options>>(std::move(table)), fit](
                           std::span<const FitRecord> records, std::span<const double> sample_times,
                           const nlohmann::json& json) -> FitOutcome {
+    require_fit_record_count(records.size());
     auto options = table->read(json, "fit options");
     if (!sample_times.empty()) {
       if constexpr (requires { options.sample_times; }) {

@@ -20,30 +20,30 @@ namespace {
 constexpr std::string_view kStateSpaceModelName = "state_space";
 
 // An array of rows, each an array of numbers, all rows alike; an empty array is a matrix with no
-// row (and no column).
+// row (and no column). Every row's length is checked before the matrix is allocated, so that it
+// holds no more numbers than the file does (a first row of 10^7 numbers and 10^7 empty rows must
+// not ask for 10^14).
 Eigen::MatrixXd json_matrix(const nlohmann::json& value, const std::string& path) {
   if (!value.is_array())
     throw Error(
         fmt::format("{}: expected an array of rows, got {}", path, detail::describe_json(value)));
   const auto rows = Eigen::Index(value.size());
-  Eigen::Index columns = 0;
-  Eigen::MatrixXd matrix;
   for (Eigen::Index i = 0; i < rows; ++i) {
     const auto& row = value[std::size_t(i)];
     const auto row_path = fmt::format("{}[{}]", path, i);
     if (!row.is_array())
       throw Error(fmt::format("{}: expected a row (an array of numbers), got {}", row_path,
                               detail::describe_json(row)));
-    if (i == 0) {
-      columns = Eigen::Index(row.size());
-      matrix.resize(rows, columns);
-    } else if (Eigen::Index(row.size()) != columns) {
+    if (row.size() != value[0].size())
       throw Error(fmt::format("{}: {} numbers, but row 0 has {}; every row must be as long",
-                              row_path, row.size(), columns));
-    }
-    for (Eigen::Index j = 0; j < columns; ++j)
-      matrix(i, j) = detail::json_number(row[std::size_t(j)], fmt::format("{}[{}]", row_path, j));
+                              row_path, row.size(), value[0].size()));
   }
+  const auto columns = rows == 0 ? Eigen::Index(0) : Eigen::Index(value[0].size());
+  Eigen::MatrixXd matrix(rows, columns);
+  for (Eigen::Index i = 0; i < rows; ++i)
+    for (Eigen::Index j = 0; j < columns; ++j)
+      matrix(i, j) = detail::json_number(value[std::size_t(i)][std::size_t(j)],
+                                         fmt::format("{}[{}][{}]", path, i, j));
   return matrix;
 }
 

@@ -180,6 +180,72 @@ for step in input-grid:1e-6 input-grid:1e-17 arc-length:1e-300; do
     --output y --out fitted.json --resample "$step"
 done
 
+# 2c. Counts a user gives to the dynamic models (fit-system, evaluate, fit --tables), each
+# bounded before it costs anything, and their messages.
+awk 'BEGIN { print "u,y"; for (k = 0; k < 128; k++) { u = sin(k * 0.3); print u "," 0.5 * u } }' >lag.csv
+LAG="--data lag.csv --input u --output y --samples-per-period 64"
+for order in 101 500 1500; do
+  check_error order "--order $order: the order must be in 1..100 (the limit of a fit's order)" \
+    "$HYST" fit-system $LAG --sample-time 1 --order "$order" --out x.json
+done
+for ts in 0 -1 inf nan; do
+  check_error sample-time "the sample time must be finite and > 0 s" "$HYST" fit-system $LAG \
+    --sample-time "$ts" --out x.json
+done
+check_error thresholds "--thresholds: 101 thresholds are above the limit of 100" "$HYST" \
+  fit-system --model hammerstein $LAG --sample-time 1 --out x.json \
+  --thresholds "0$(seq -s, 1 100 | sed 's/^/,/')"
+check_error feedback-channels "--feedback-channels 65: above the limit of 64 channels" "$HYST" \
+  fit-system --model hysteretic_lfr $LAG --sample-time 1 --out x.json --feedback-channels 65
+check_error tables "--tables: 5001 tables, more than the limit of 1000 records of one fit" \
+  "$HYST" fit modified_pi_creep --data sine.csv --input v --output y --out fitted.json \
+  --tables "$(seq -s, 1 5001)"
+check_error tables "--tables: table 1 is given twice" "$HYST" fit modified_pi_creep \
+  --data sine.csv --input v --output y --out fitted.json --tables 1,2,1
+"$PYTHON" - <<'PY' || exit 1
+import json
+def linear(a, b, c, d):
+    return {"sample_time": 1.0, "a": a, "b": b, "c": c, "d": d}
+def write(name, model, params):
+    json.dump({"model": model, "version": 1, "params": params}, open(name, "w"))
+n = 501
+write("dense_501.json", "state_space",
+      linear([[0.0] * n for _ in range(n)], [[0.0]] * n, [[0.0] * n], [[1.0]]))
+# A first row of 10^6 numbers, then 10^6 empty rows: once a matrix of 10^12 entries was
+# allocated before the second row was looked at.
+with open("ragged_rows.json", "w") as f:
+    f.write('{"model": "state_space", "version": 1, "params": {"sample_time": 1, "a": [['
+            + ",".join(["0"] * 1000000) + "]" + ",[]" * 1000000
+            + '], "b": [[0]], "c": [[0]], "d": [[1]]}}')
+# One state, one input, one output and one hysteresis channel: z = x, x' = 0.5 x + u + w.
+lfr = linear([[0.5]], [[1.0, 1.0]], [[1.0], [1.0]], [[0.0, 0.0], [0.0, 0.0]])
+plays = 1001
+write("lfr_many_plays.json", "hysteretic_lfr",
+      {"inputs": 1, "linear": lfr, "feedback": [{"model": "pi", "params": {
+          "thresholds": [k / plays for k in range(plays)], "weights": [0.001] * plays,
+          "offset": 0.0}}]})
+n = 101
+write("lfr_101_states.json", "hysteretic_lfr",
+      {"inputs": 1, "linear": linear([[0.0] * n for _ in range(n)], [[0.0, 0.0]] * n,
+                                     [[0.0] * n] * 2, [[0.0, 0.0], [0.0, 0.0]]),
+       "feedback": [{"model": "pi", "params": {"thresholds": [0.0], "weights": [1.0]}}]})
+# w = -50 z: the loop's pole at 0.5 - 50 lies far outside the unit circle.
+write("lfr_negative_weight.json", "hysteretic_lfr",
+      {"inputs": 1, "linear": lfr, "feedback": [{"model": "pi", "params": {
+          "thresholds": [0.0, 0.5], "weights": [-50.0, 0.1], "offset": 0.0}}]})
+PY
+check_error dense_501.json "order n = 501 is above the limit of 500 states" "$HYST" evaluate \
+  --model dense_501.json $LAG
+check_error ragged_rows.json "params.a[1]: 0 numbers, but row 0 has 1000000" "$HYST" evaluate \
+  --model ragged_rows.json $LAG
+check_error lfr_many_plays.json "feedback[0] has 1002 parameters, more than the limit of 1000" \
+  "$HYST" evaluate --model lfr_many_plays.json $LAG --periodic
+check_error lfr_101_states.json "the linear block has 101 states, more than the limit of 100" \
+  "$HYST" evaluate --model lfr_101_states.json $LAG
+# (A score's errors do not name the model file yet: the label is the message's own subject.)
+check_error "hysteretic LFR" "the loop diverges: in period 1 of the search for the periodic" \
+  "$HYST" evaluate --model lfr_negative_weight.json $LAG --periodic
+
 # 3. Bad variants of every registered model's example file.
 models="$("$HYST" models --json | "$PYTHON" -c 'import json,sys; print(" ".join(m["name"] for m in json.load(sys.stdin)))')" ||
   exit 1

@@ -421,7 +421,7 @@ JSON
   expect_error 1 "--model 'hammer': the dynamic models are: state_space, hysteretic_lfr, hammerstein" -- \
     "$HYST" fit-system --model hammer --data lag.csv --input u --output y --sample-time 1 \
     --out x.json
-  expect_error 1 "order 0 must be in 1.." -- "$HYST" fit-system --data lag.csv --input u \
+  expect_error 1 "--order 0: the order must be in 1.." -- "$HYST" fit-system --data lag.csv --input u \
     --output y --samples-per-period 64 --sample-time 1 --order 0 --out x.json
   [ ! -e x.json ] || fail "a failed fit wrote x.json"
 }

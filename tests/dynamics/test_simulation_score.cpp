@@ -4,6 +4,7 @@
 #include "hyst/dynamics/simulation_score.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -83,6 +84,21 @@ TEST(SimulationScore, RejectsMismatchedData) {
   auto one_input = e.input;
   one_input.channels = 1;
   EXPECT_HYST_ERROR(score_state_space(model, one_input, e.output), "the model has 2 inputs");
+}
+
+TEST(SimulationScore, NamesANonFiniteSampleInsteadOfCallingItsChannelConstant) {
+  const auto e = test::periodic_experiment(test::two_lags, 2, 2, 2, kScoreSamples, 20, 2, 1, 3);
+  const auto model = two_lags_model();
+  auto infinite = e;
+  infinite.output(7, 0, 1, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_HYST_ERROR(score_state_space(model, infinite.input, infinite.output),
+                    "score: output: the value at (N = 7, channel = 0, realisation = 1, period = 0) "
+                    "is inf; every sample must be finite");
+  auto not_a_number = e;
+  not_a_number.input(3, 1, 0, 0) = std::nan("");
+  EXPECT_HYST_ERROR(score_state_space(model, not_a_number.input, not_a_number.output),
+                    "score: input: the value at (N = 3, channel = 1, realisation = 0, period = 0) "
+                    "is nan");
 }
 
 }  // namespace

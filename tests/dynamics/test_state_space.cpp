@@ -461,7 +461,7 @@ TEST(StateSpaceValidation, RejectsWrongSizes) {
   EXPECT_HYST_ERROR(StateSpace{p}, "state space: D is 0 x 2");
   const auto n = Eigen::Index(StateSpace::max_order + 1);
   p = {MatrixXd::Zero(n, n), MatrixXd::Zero(n, 1), MatrixXd::Zero(1, n), MatrixXd::Zero(1, 1), 1.0};
-  EXPECT_HYST_ERROR(StateSpace{p}, "state space: order n = 2001 exceeds the maximum 2000");
+  EXPECT_HYST_ERROR(StateSpace{p}, "state space: order n = 501 is above the limit of 500 states");
 }
 
 TEST(StateSpaceValidation, NamesTheFieldOfTheError) {

@@ -22,6 +22,7 @@
 #include "hyst/data/sample_time.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/json_text.hpp"
+#include "hyst/io/limits.hpp"
 #include "hyst/registry/forc_fit.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "progress_display.hpp"
@@ -176,8 +177,13 @@ std::string models_that_can_fit(const ModelRegistry& registry) {
   return list.empty() ? "none" : list;
 }
 
-//! "6,1" as table numbers.
+//! "6,1" as table numbers: at most limits::kMaxFitRecords, none twice.
 std::vector<std::size_t> table_list(const std::string& text) {
+  const auto count = std::size_t(std::count(text.begin(), text.end(), ',')) + 1;
+  if (count > io::limits::kMaxFitRecords) {
+    throw Error(fmt::format("--tables: {} tables, more than the limit of {} records of one fit",
+                            count, io::limits::kMaxFitRecords));
+  }
   std::vector<std::size_t> tables;
   std::size_t begin = 0;
   while (begin <= text.size()) {
@@ -193,6 +199,9 @@ std::vector<std::size_t> table_list(const std::string& text) {
     if (item.empty() || used != item.size() || !std::isdigit(static_cast<unsigned char>(item[0]))) {
       throw Error(
           fmt::format("--tables '{}': expected table numbers separated by commas, e.g. 6,1", text));
+    }
+    if (std::find(tables.begin(), tables.end(), value) != tables.end()) {
+      throw Error(fmt::format("--tables: table {} is given twice", value));
     }
     tables.push_back(value);
     begin = comma + 1;

@@ -2,6 +2,7 @@
 // best linear approximation of the pooled experiments, then a state-space model of it
 // (hyst/dynamics/fit_state_space.hpp).
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -125,7 +126,24 @@ void fit_with_hysteresis(const FitSystemOptions& options,
          const HystereticLfrFitOptions& o) { return fit_hysteretic_lfr(l, x, o); });
 }
 
+// What the options ask for, bounded before any data is read.
+void check_counts(const FitSystemOptions& options) {
+  if (!std::isfinite(options.sample_time) || !(options.sample_time > 0.0))
+    throw Error(fmt::format("--sample-time {:g}: the sample time must be finite and > 0 s",
+                            options.sample_time));
+  if (options.linear.empty() && (options.order < 1 || options.order > kMaxStateSpaceFitOrder))
+    throw Error(fmt::format("--order {}: the order must be in 1..{} (the limit of a fit's order)",
+                            options.order, kMaxStateSpaceFitOrder));
+  if (options.threshold_fractions.size() > kMaxThresholdFractions)
+    throw Error(fmt::format("--thresholds: {} thresholds are above the limit of {}",
+                            options.threshold_fractions.size(), kMaxThresholdFractions));
+  if (options.feedback_channels > kMaxFeedbackChannels)
+    throw Error(fmt::format("--feedback-channels {}: above the limit of {} channels",
+                            options.feedback_channels, kMaxFeedbackChannels));
+}
+
 void run(const FitSystemOptions& options) {
+  check_counts(options);
   if (options.model != "state_space" && options.model != "hysteretic_lfr" &&
       options.model != "hammerstein")
     throw Error(
@@ -191,10 +209,12 @@ void add_fit_system_command(CLI::App& app) {
                    "it). Both are fitted from the linear model on the simulation error")
       ->capture_default_str();
   add_dynamic_data_options(*command, options->data, true);
-  command->add_option("--sample-time", options->sample_time, "Sample time Ts [s]")
-      ->required()
-      ->check(CLI::PositiveNumber);
-  command->add_option("--order", options->order, "Number of states")->capture_default_str();
+  command->add_option("--sample-time", options->sample_time, "Sample time Ts [s], finite and > 0")
+      ->required();
+  command
+      ->add_option("--order", options->order,
+                   fmt::format("Number of states, 1 to {}", kMaxStateSpaceFitOrder))
+      ->capture_default_str();
   command
       ->add_option("--weighting", options->weighting,
                    "Weights of the frequency-response fit: none (the simulation error of flat "

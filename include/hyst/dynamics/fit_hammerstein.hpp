@@ -21,6 +21,7 @@
 
 #include "hyst/core/progress.hpp"
 #include "hyst/dynamics/best_linear_approximation.hpp"
+#include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/hysteretic_lfr.hpp"
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/identify/fit_report.hpp"
@@ -29,7 +30,8 @@
 namespace hyst {
 
 struct HammersteinFitOptions {
-  //! PI thresholds as fractions of the largest |u_i|, increasing from 0.
+  //! PI thresholds as fractions of the largest |u_i|, increasing from 0; at most
+  //! kMaxThresholdFractions (fit_hysteretic_lfr.hpp).
   std::vector<double> threshold_fractions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.7};
   //! Accepted Levenberg-Marquardt steps (one Jacobian each; rejected trial steps cost one
   //! simulation each and are not counted).

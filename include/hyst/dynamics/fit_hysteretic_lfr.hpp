@@ -41,8 +41,14 @@ namespace hyst {
 //! parameters, about 2 n + 10 per channel for n states.
 inline constexpr std::size_t kMaxFeedbackChannels = 64;
 
+//! The most PI thresholds (plays) per hysteresis channel a fit takes (hysteretic LFR and
+//! Hammerstein fits alike): each play is a parameter of every channel, and the fit's cost grows
+//! with the square of its parameters (the fits use 6).
+inline constexpr std::size_t kMaxThresholdFractions = 100;
+
 struct HystereticLfrFitOptions {
-  //! PI thresholds as fractions of the largest |z_i|, increasing from 0.
+  //! PI thresholds as fractions of the largest |z_i|, increasing from 0; at most
+  //! kMaxThresholdFractions.
   std::vector<double> threshold_fractions = {0.0, 0.02, 0.05, 0.1, 0.2, 0.4};
   //! Accepted Levenberg-Marquardt steps in the structure above (one Jacobian each; rejected trial
   //! steps cost one simulation each and are not counted).

@@ -52,8 +52,18 @@ constexpr EnumNames<BlaWeighting, 3> enumerator_names(BlaWeighting) {
 //! The inverse of to_string(); throws hyst::Error naming the accepted values.
 BlaWeighting bla_weighting_from_string(std::string_view text);
 
+//! The highest order a fit takes: 100. Its Jacobian has a row per line, output, input and part
+//! (real, imaginary) and about (m + p + 1) n columns, so its memory grows with n and each
+//! iteration's time with n^2. Measured on the FSM benchmark's 200 mV training set (3839 lines,
+//! 3 x 3 channels; CPU time on this 2-core machine): about 5 MB per state (peak 0.26, 0.50 and
+//! 1.05 GB at n = 50, 100 and 200), and 1.7, 6.3 and 31 s per Levenberg-Marquardt iteration. At
+//! the default limit of 200 iterations that is at most 21 minutes at n = 100, but 1.7 hours at
+//! n = 200 and about 11 hours at n = 500 (which took 2.8 GB); the fits in use have 28 and 44
+//! states and converge in 60 to 90 iterations.
+inline constexpr std::size_t kMaxStateSpaceFitOrder = 100;
+
 struct StateSpaceFitOptions {
-  std::size_t order = 2;                //!< n >= 1 states
+  std::size_t order = 2;                //!< 1 <= n <= kMaxStateSpaceFitOrder states
   std::size_t subspace_block_rows = 0;  //!< q > n of the subspace step; 0: 2n + 2
   BlaWeighting weighting = BlaWeighting::none;
   std::size_t max_iterations = 200;  //!< Levenberg-Marquardt iterations; 0 keeps the subspace model
@@ -68,7 +78,7 @@ struct StateSpaceFit {
   double subspace_cost = 0.0;
 };
 
-//! Throws hyst::Error for an order below 1 or above StateSpace::max_order, fewer lines than the
+//! Throws hyst::Error for an order below 1 or above kMaxStateSpaceFitOrder, fewer lines than the
 //! order needs, q <= n, or a pole-radius bound outside (0, 1).
 StateSpaceFit fit_state_space(const BestLinearApproximation& bla,
                               const StateSpaceFitOptions& options);

@@ -37,8 +37,9 @@ namespace hyst {
 
 //! The linear block of an LFR cut into its (u, w) -> (y, z) parts; validated on construction.
 struct LfrMatrices {
-  //! Throws hyst::Error when the block has not `inputs + feedback` inputs and more than `feedback`
-  //! outputs, when inputs is 0, or when Dzw has a non-zero entry (named by its place in D).
+  //! Throws hyst::Error when the block has more than kMaxLfrOrder states, not `inputs + feedback`
+  //! inputs and more than `feedback` outputs, when inputs is 0, or when Dzw has a non-zero entry
+  //! (named by its place in D).
   LfrMatrices(const StateSpace& linear, std::size_t inputs, std::size_t feedback);
 
   Eigen::MatrixXd a, b_u, b_w, c_y, c_z, d_yu, d_yw, d_zu;
@@ -59,12 +60,22 @@ struct LfrPeriodicOptions {
 //! Hysteresis outputs beyond this magnitude mean the loop diverges (periodic_state gives up).
 inline constexpr double kMaxPeriodicMagnitude = 1e100;
 
+//! The most states of the linear block: 100, the most a state-space fit makes. The search for the
+//! periodic state may run LfrPeriodicOptions::max_iterations periods of about 2 n^2 operations
+//! per sample: at 100 states about a minute per realisation of the FSM test set at the worst; a
+//! dense linear model of 500 states scores in 6 s, but as an LFR block could take hours.
+inline constexpr std::size_t kMaxLfrOrder = 100;
+
 //! Checks of the non-template code (input signals, convergence), shared by every H.
 namespace lfr_detail {
 //! Throws hyst::Error for a column count other than `columns` or a non-finite sample.
 void require_signal(const Eigen::MatrixXd& signal, std::size_t columns, const char* what);
 //! Throws hyst::Error saying that the periodic state did not converge within the limit.
 [[noreturn]] void throw_not_periodic(std::size_t iterations, double change, double tolerance);
+//! Throws hyst::Error saying that the loop diverged: in period `period` of the search for the
+//! periodic state the hysteresis outputs reached `magnitude` (beyond kMaxPeriodicMagnitude, or
+//! not finite).
+[[noreturn]] void throw_diverging(std::size_t period, double magnitude);
 //! Throws hyst::Error unless there is one block per input of the linear block.
 void require_hammerstein_blocks(std::size_t linear_inputs, std::size_t blocks);
 //! Throws hyst::Error for a state of the wrong size or with a non-finite value.
@@ -228,7 +239,7 @@ class HystereticLfr {
       change = (w - linear_input.rightCols(q)).cwiseAbs().maxCoeff() / scale;
       // A loop that diverges within a period leaves nothing to solve for.
       if (!std::isfinite(change) || !std::isfinite(scale) || scale > kMaxPeriodicMagnitude)
-        lfr_detail::throw_not_periodic(iteration + 1, change, options.tolerance);
+        lfr_detail::throw_diverging(iteration + 1, scale);
       linear_input.rightCols(q) = w;
       if (solve_linear && iteration > 0 && change > 0.5 * previous_change) solve_linear = false;
       previous_change = change;

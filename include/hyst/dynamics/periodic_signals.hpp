@@ -32,6 +32,11 @@ struct PeriodicSignals {
   std::size_t record_length() const { return periods * samples; }
 };
 
+//! Throws hyst::Error unless every value is finite, naming the first that is not by its place
+//! on the axes of the default layout: "`what`: the value at (N = 5, channel = 1, realisation = 0,
+//! period = 1) is inf; every sample must be finite" (indices from 0).
+void require_finite_signals(const PeriodicSignals& signals, std::string_view what);
+
 //! One realisation from equally long columns (one per channel) of a measured record, cut into
 //! periods of `samples_per_period` (0: the whole record is one period). Throws hyst::Error
 //! (prefixed with `source`) for no column, columns of different lengths, a record that is not a

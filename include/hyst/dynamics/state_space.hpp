@@ -27,8 +27,14 @@ namespace hyst {
 
 class StateSpace {
  public:
-  //! The most states a model may have (its matrices are dense).
-  static constexpr std::size_t max_order = 2000;
+  //! The most states a model may have: 500. Its matrices are dense: a sample costs about 2 n^2
+  //! operations and a periodic state about 2 n^3 log2(N) (A^N), so at n = 2000 scoring the FSM
+  //! test set (3 x 16 384 samples, --periodic) ran past 5 minutes; at 500 it takes 5.7 s of CPU,
+  //! at 250 0.8 s. A hysteretic LFR's linear block has a lower limit (kMaxLfrOrder).
+  static constexpr std::size_t max_order = 500;
+  //! The most inputs and the most outputs (a hysteretic LFR's linear block counts its hysteresis
+  //! channels among both): with max_order they bound B, C and D, and so what a sample costs.
+  static constexpr std::size_t max_channels = 256;
 
   struct Params {
     Eigen::MatrixXd a;         //!< n x n

@@ -48,4 +48,20 @@ inline constexpr std::size_t kMaxNpyHeaderBytes = 10000;
 inline constexpr std::size_t kMaxNpzMemberBytes =
     12 + kMaxNpyHeaderBytes + kMaxNumpyValues * sizeof(double);
 
+//! Most values of one array in a model file (thresholds, weights, plays, relays, a state's play
+//! outputs): 16 777 216 (2^24). The largest array a model needs, the weights of a Preisach
+//! model of 4096 levels, has 8 390 656. Checked on the array's length before it is converted.
+inline constexpr std::size_t kMaxModelArrayValues = std::size_t{1} << 24;
+
+//! Most records one fit of several records takes (`hyst fit --tables`, Python fit_records): 1 000
+//! (aixACCT exports hold about ten tables). Checked on the count before any record is read or
+//! copied; the records' samples together are bounded by kMaxNumpyValues as well.
+inline constexpr std::size_t kMaxFitRecords = 1000;
+
+//! Most parameters of one hysteresis channel of a hysteretic LFR model file (a PI model's
+//! thresholds and weights): 1 000. Every channel steps once per sample of every period the search
+//! for the periodic state runs (up to 1 000 periods): a channel of 200 000 plays took 114 s to
+//! score; the fits make 6 plays.
+inline constexpr std::size_t kMaxLfrChannelParameters = 1000;
+
 }  // namespace hyst::io::limits

@@ -116,6 +116,11 @@ struct ModelEntry {
   bool can_export_c() const { return static_cast<bool>(c_code); }
 };
 
+//! Throws hyst::Error when a fit of several records is given `count` of them, more than
+//! io::limits::kMaxFitRecords; ModelEntry::fit_records checks it, and the command line and Python
+//! before they read or copy the records.
+void require_fit_record_count(std::size_t count);
+
 //! Fits `entry`'s model: prepares request.input/output as request.preprocessing asks
 //! (data::preprocess()) and a separate validation record by data::prepare_validation(), calls
 //! entry.fit on the prepared records and lists the steps applied in the report's `preprocessing`

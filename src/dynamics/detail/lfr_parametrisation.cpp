@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 
 namespace hyst::detail {
 
@@ -31,6 +32,10 @@ std::vector<WeightDerivative> pi_weight_derivatives(Eigen::Index channels, Eigen
 }
 
 void check_threshold_fractions(const std::vector<double>& r, const std::string& fit) {
+  if (r.size() > kMaxThresholdFractions)
+    throw Error(fmt::format("{}: {} threshold_fractions are above the limit of {}", fit, r.size(),
+                            kMaxThresholdFractions),
+                "threshold_fractions");
   if (r.empty() || r[0] != 0.0)
     throw Error(fit + ": threshold_fractions must start at 0", "threshold_fractions");
   for (std::size_t j = 1; j < r.size(); ++j)

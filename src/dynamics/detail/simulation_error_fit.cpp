@@ -192,6 +192,11 @@ class AcceptedStepLimit final : public ceres::IterationCallback {
 void check_experiments(const StateSpace& linear, std::span<const PeriodicExperiment> experiments,
                        const std::string& fit) {
   if (experiments.empty()) throw Error(fit + ": no experiment");
+  if (linear.order() > kMaxLfrOrder)
+    throw Error(
+        fmt::format("{}: the linear model has {} states, more than the limit of {} of a "
+                    "hysteretic LFR's linear block",
+                    fit, linear.order(), kMaxLfrOrder));
   for (std::size_t e = 0; e < experiments.size(); ++e) {
     const auto& x = experiments[e];
     if (x.input.channels != linear.inputs() || x.output.channels != linear.outputs())
@@ -204,6 +209,10 @@ void check_experiments(const StateSpace& linear, std::span<const PeriodicExperim
           "{}: experiment {} has {} period per realisation; the fit needs 2 "
           "or more (the first, which may hold the experiment's transient, is not scored)",
           fit, e, x.input.periods));
+    // Every sample, the unscored first period too: it drives the simulation and enters the
+    // outputs' scales and deviations.
+    require_finite_signals(x.input, fmt::format("{}: experiment {} input", fit, e));
+    require_finite_signals(x.output, fmt::format("{}: experiment {} output", fit, e));
   }
 }
 
