@@ -9,8 +9,8 @@ namespace hyst::cli {
 void report_domain(const DomainCheck& check, std::size_t samples, std::string_view model,
                    std::string_view what, bool strict) {
   if (check.inside()) return;
-  const auto message = fmt::format("{}: {}: outside the domain the model was fitted on: {}",
-                                   model, what, check.message(samples));
+  const auto message = fmt::format("{}: {}: outside the domain the model was fitted on: {}", model,
+                                   what, check.message(samples));
   if (strict) throw Error(message + " (--strict)");
   warn(message);
 }
