@@ -165,3 +165,34 @@ def test_actuator_plots_are_published_as_one_set(tmp_path):
         assert (tmp_path / name).read_bytes()[:4] == b"\x89PNG"
     assert len([p for p in tmp_path.iterdir() if p.name.startswith(".hyst-set.")]) == 1
     assert (tmp_path / "notes.txt").read_text() == "mine"
+
+
+def test_check_outputs_refuses_an_output_that_is_an_input(tmp_path):
+    record = tmp_path / "r.csv"
+    record.write_text("v,y\n1,2\n")
+    link = tmp_path / "link.csv"
+    os.link(record, link)
+    hyst.io.check_outputs([(str(record), "--data")], [(str(tmp_path / "m.json"), "--out")])
+    with pytest.raises(hyst.Error, match="same file"):
+        hyst.io.check_outputs([(str(record), "--data")], [(str(link), "--out")])
+
+
+def test_output_set_publishes_all_names_at_once_or_leaves_the_previous_set(tmp_path):
+    folder = tmp_path / "out"
+    with hyst.io.OutputSet(folder, ["a.txt", "b.txt"]) as first:
+        for name in ("a.txt", "b.txt"):
+            Path(first.staged(name)).write_text(f"first {name}")
+        first.publish()
+        assert Path(first.published("b.txt")) == folder / "b.txt"
+    assert (folder / "a.txt").read_text() == "first a.txt"
+    assert os.path.islink(folder / "a.txt")
+    # A second run that stages a new set but never publishes it (discarded): the first stays.
+    second = hyst.io.OutputSet(folder, ["a.txt", "b.txt"])
+    Path(second.staged("a.txt")).write_text("second a.txt")
+    staging = Path(second.staged())
+    second.discard()
+    assert not staging.exists()
+    assert (folder / "a.txt").read_text() == "first a.txt"
+    assert (folder / "b.txt").read_text() == "first b.txt"
+    with pytest.raises(hyst.Error, match="discarded"):
+        second.staged("a.txt")

@@ -194,7 +194,10 @@ def test_one_validation_rule_on_the_piezo_amplitudes():
     # The domain of the fit part: the 15 kV record's ranges; the 1 kV input lies inside it, the
     # 15 kV input scaled by 2 does not.
     domain = report.domain
+    assert isinstance(domain, hyst.FittedDomain) and domain.sample_time is None
     assert (domain.input_min, domain.input_max) == (v15.min(), v15.max())
+    assert domain.largest_input_step == pytest.approx(np.abs(np.diff(v15)).max())
+    assert 1 < domain.longest_hold_samples < len(v15)
     assert (domain.output_min, domain.output_max) == (y15.min(), y15.max())
     assert domain.samples == len(v15)
     assert domain.check_inputs(v1) == (True, "")
