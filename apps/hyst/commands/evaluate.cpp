@@ -131,7 +131,14 @@ void run(const EvaluateOptions& options) {
   const auto& model = *system;
   const auto experiments = read_experiments(options.data);
   const auto& experiment = experiments.at(0);
-  const auto result = score(model, experiment, {options.periodic, options.transient});
+  const auto result = [&] {
+    try {
+      return score(model, experiment, {options.periodic, options.transient});
+    } catch (const Error& error) {
+      throw Error(fmt::format("{} on {}: {}", options.model,
+                              describe_experiment(options.data, 0, experiment), error.what()));
+    }
+  }();
   const auto warnings = free_run_warnings(linear_block(model), result.runaway);
   if (options.strict && !warnings.empty())
     throw Error(fmt::format("{}: {} (--strict)", options.model, warnings.front()));
