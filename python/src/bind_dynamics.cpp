@@ -127,6 +127,14 @@ SimulationScore score_model(const AnyHystereticLfr& model, const PeriodicSignals
   return score_hysteretic_lfr(model, u, y, options);
 }
 
+// A RuntimeWarning when the linear block has a pole outside the unit circle: its free run
+// grows without bound (free_run_check.hpp); the simulation itself goes on.
+void warn_if_unstable(const StateSpace& linear) {
+  if (!(linear.spectral_radius() > kUnstablePoleMagnitude)) return;
+  const auto text = free_run_warnings(linear, RunawayCount{}).front();
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 const StateSpace& linear_block(const StateSpace& model) {
   return model;
 }
@@ -255,11 +263,13 @@ void bind_dynamics(py::module_& module) {
              const std::optional<Eigen::VectorXd>& initial_state) {
             const auto u = bounded_record(input, "input");
             auto state = initial_state ? m.make_state(*initial_state) : m.initial_state();
+            warn_if_unstable(m);
             py::gil_scoped_release release;
             return m.simulate(u, state);
           },
           "input"_a, "initial_state"_a = py::none(),
-          "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`.")
+          "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`; a "
+          "RuntimeWarning when a pole lies outside the unit circle (the free run grows).")
       .def("periodic_state", &StateSpace::periodic_state, "one_period"_a,
            "The state one period of the periodic input (N, m) returns to.")
       .def("simulate_periodic", &StateSpace::simulate_periodic, "one_period"_a,
@@ -389,10 +399,13 @@ void bind_dynamics(py::module_& module) {
           "simulate",
           [](const AnyHystereticLfr& model, const py::object& input) {
             const auto u = bounded_record(input, "input");
+            warn_if_unstable(model.linear());
             py::gil_scoped_release release;
             return model.simulate(u);
           },
-          "input"_a, "Outputs (N, p) for inputs (N, m) from rest.")
+          "input"_a,
+          "Outputs (N, p) for inputs (N, m) from rest; a RuntimeWarning when a pole of the "
+          "linear block lies outside the unit circle.")
       .def(
           "simulate_periodic",
           [](const AnyHystereticLfr& model, const py::object& one_period) {

@@ -4,6 +4,7 @@ computation of its definition on the Fine Steering Mirror data."""
 
 import json
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -123,6 +124,17 @@ def test_evaluate_says_when_the_free_run_cannot_be_trusted():
     assert "simulated samples ran away" in score["warnings"][1]
     with pytest.raises(hyst.Error, match=r"pole of magnitude 1.05.*\(strict=True\)"):
         hyst.evaluate(unstable, u, y, strict=True)
+    # Simulating it says so too, and simulates all the same; a stable model says nothing.
+    record = u[:, :, 0, 0]
+    with pytest.warns(RuntimeWarning, match="pole of magnitude 1.05, outside the unit circle"):
+        grown = unstable.simulate(record)
+    assert np.abs(grown[-1, 0]) > 10 * np.abs(y).max()  # 1.05^128 = 514
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        truth.simulate(record)
+    lfr = hyst.HystereticLfr.hammerstein(unstable, [pi_feedback(1.0), pi_feedback(1.0)])
+    with pytest.warns(RuntimeWarning, match="pole of magnitude 1.05"):
+        lfr.simulate(record)
 
 
 def test_model_files_round_trip(tmp_path):
