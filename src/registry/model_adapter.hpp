@@ -88,6 +88,9 @@ class ModelAdapter final : public DynamicModel {
   void reset() override { state_ = model_.initial_state(); }
   void simulate(std::span<const double> input, std::span<double> output) override {
     hyst::simulate(model_, state_, input, output);
+    // A recursion that runs away reaches infinity later: its first sample beyond the bound is
+    // the one to name.
+    if constexpr (requires { Codec::runaway_limit(model_); }) throw_if_runaway(input, output);
     // Finite inputs can still overflow (e.g. 1e308 times a weight above 1): report, never pass
     // on infinities as results. One pass over the batch, outside the sample loop.
     for (std::size_t k = 0; k < output.size(); ++k) {
@@ -97,7 +100,6 @@ class ModelAdapter final : public DynamicModel {
                     "input");
       }
     }
-    if constexpr (requires { Codec::runaway_limit(model_); }) throw_if_runaway(input, output);
   }
   std::size_t parameter_count() const override { return Codec::parameter_count(model_); }
   std::string describe() const override { return Codec::describe(model_); }

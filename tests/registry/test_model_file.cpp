@@ -191,6 +191,12 @@ TEST(ModelFile, RunawaySimulationIsAnErrorWithItsSample) {
   EXPECT_HYST_ERROR(model->simulate(longer, output),
                     "the simulation ran away at sample 9 (input 1): the output 1023 is beyond "
                     "+-1000 (1000 output scales");
+  // Run long enough to overflow (2^1025 is inf): the first sample beyond the bound is named,
+  // not the overflow a thousand samples later.
+  model->reset();
+  const std::vector<double> overflowing(1100, 1.0);
+  output.resize(overflowing.size());
+  EXPECT_HYST_ERROR(model->simulate(overflowing, output), "the simulation ran away at sample 9");
 }
 
 }  // namespace
