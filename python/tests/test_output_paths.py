@@ -3,6 +3,7 @@
 pointing at its target, which gets the new content, and an output that is the input (also through
 a link or a hard link) or another output is refused with hyst.Error naming both."""
 
+import contextlib
 import os
 import shutil
 import stat
@@ -82,10 +83,15 @@ def test_fifo_is_written_through(name, tmp_path):
     try:
         WRITERS[name][0](tmp_path, fifo)
     finally:
-        if stat.S_ISFIFO(os.lstat(fifo).st_mode) and reader.is_alive() and not got:
-            # Unblocks the reader if the writer never opened the FIFO (the test fails below).
-            with open(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK), "wb"):
-                pass
+        # A writer that wrote and closed lets the reader finish on its own: wait for that first,
+        # else the reader may be between its last read and storing the bytes.
+        reader.join(2)
+        if stat.S_ISFIFO(os.lstat(fifo).st_mode) and reader.is_alive():
+            # Unblocks the reader if the writer never opened the FIFO (the test fails below);
+            # ENXIO: the reader has closed it meanwhile, nothing to unblock.
+            with contextlib.suppress(OSError):
+                with open(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK), "wb"):
+                    pass
         reader.join(10)
     assert stat.S_ISFIFO(os.lstat(fifo).st_mode), "the FIFO was replaced"
     assert got and WRITERS[name][1](got[0]), got[:1]
