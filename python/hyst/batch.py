@@ -101,6 +101,7 @@ class _Task:
     input: str
     output: str
     options: Mapping[str, Any]
+    time: Optional[str] = None  # the time column of every record, if given
 
 
 def _metrics(metrics: Any) -> Dict[str, Any]:
@@ -141,11 +142,18 @@ def _run_task(task: _Task) -> RecordResult:
     """Reads, fits and saves one record; every failure becomes a failed row. Runs on a worker."""
     start = time.perf_counter()
     try:
-        columns = hyst.data.extract(task.path, [task.input, task.output])
+        names = [task.input, task.output] + ([task.time] if task.time else [])
+        columns = hyst.data.extract(task.path, names)
         input, output = columns[task.input], columns[task.output]
         if input.size == 0:
             raise hyst.Error(f"{task.path}: input '{task.input}' has no samples")
-        result = hyst.fit(task.model, input, output, **task.options)
+        timed = {"time": columns[task.time]} if task.time else {}
+        try:
+            result = hyst.fit(task.model, input, output, **timed, **task.options)
+        except hyst.Error as error:
+            if not task.time:
+                raise
+            raise hyst.Error(f"{task.path}: time column '{task.time}': {error}") from error
         report = result.report
         if report.status == "failed":
             raise hyst.Error(f"fitting '{task.model}' to {task.path} failed: {report.message}")
@@ -546,11 +554,20 @@ def _check_outputs(paths: Sequence[str], folder: Path, files: Sequence[str]) -> 
     hyst.io.check_outputs([(path, "record") for path in paths], outputs)
 
 
+def _with_sample_time(options: Dict[str, Any], sample_time: Optional[float]) -> Dict[str, Any]:
+    """--sample-time as the fit option sample_time (refused when --option gives it too)."""
+    if sample_time is None:
+        return options
+    if "sample_time" in options:
+        raise ValueError("--sample-time and --option sample_time both give the sample time")
+    return {**options, "sample_time": sample_time}
+
+
 def fit(records: Records, model: str, *, input: str, output: str,
         out: Union[str, "os.PathLike[str]"], options: Optional[Mapping[str, Any]] = None,
         client: Any = None, scheduler: Optional[str] = None, workers: int = 2,
         timeout: float = 30.0, record_timeout: float = RECORD_TIMEOUT,
-        progress: Any = None) -> List[RecordResult]:
+        progress: Any = None, time_column: Optional[str] = None) -> List[RecordResult]:
     """Fits `model` to every record, one task each, and returns the rows in the records' order.
 
     records: a path or glob pattern ("data/*.csv", "data/**/*.mat"), or a list of them; each
@@ -561,7 +578,10 @@ def fit(records: Records, model: str, *, input: str, output: str,
       extension .json. They are published as one set at the end (hyst.io.OutputSet): a run that
       is interrupted or fails leaves the previous set; a folder it created is removed again.
     options: keyword arguments of hyst.fit: the model's fit options (operators=12) and the
-      record's preparation (detrend=True, cycles="2-3").
+      record's preparation (detrend=True, cycles="2-3"); sample_time=0.01 gives every record
+      that sample time.
+    time_column: the time column of every record [s]: a model with time in it is fitted at each
+      record's own (uniform) step, as hyst.fit(time=...); a record without it fails.
     client: a distributed.Client to run on; scheduler: the address of a Dask scheduler
       ("tcp://host:8786") to connect to; neither: a local cluster of `workers` processes with a
       thread each, started and closed here. workers=0: no Dask, the records are fitted one after
@@ -597,6 +617,13 @@ def fit(records: Records, model: str, *, input: str, output: str,
     files = _model_files(paths, folder)
     _check_outputs(paths, folder, files)
     chosen = dict(options or {})
+    if time_column is not None and "sample_time" in chosen:
+        raise ValueError("time_column and the option sample_time both give the sample time: "
+                         "give one")
+    timed = any(option.name == "sample_time" for option in entry.fit_options)
+    if time_column is not None and not timed:
+        raise hyst.Error(f"time_column: model '{model}' has no sample time (its output depends "
+                         "on the order of the samples only)")
     callback = _progress.as_callback(progress, "batch.fit")
 
     created = _missing_folders(folder)
@@ -610,7 +637,7 @@ def fit(records: Records, model: str, *, input: str, output: str,
             topic = f"hyst-batch-{os.getpid()}-{time.time_ns()}"
             tasks = [_Task(record, os.path.abspath(record), os.path.abspath(folder / file),
                            os.path.abspath(staging / file), topic, k, model, input, output,
-                           chosen)
+                           chosen, time_column)
                      for k, (record, file) in enumerate(zip(paths, files))]
             rows, lost, where, elapsed = _run(tasks, client, scheduler, workers, timeout,
                                               record_timeout, callback)
@@ -724,6 +751,12 @@ and 143 when stopped by SIGINT or SIGTERM (the previous set stays).""")
                        help="a running Dask scheduler, e.g. tcp://host:8786")
     where.add_argument("--workers", type=int, default=2, metavar="N",
                        help="processes of the local cluster (default 2; 0: no cluster)")
+    timing = fit_command.add_mutually_exclusive_group()
+    timing.add_argument("--time", metavar="COLUMN",
+                        help="time column of every record [s]: a model with time in it is "
+                             "fitted at each record's own step")
+    timing.add_argument("--sample-time", type=_seconds_argument, metavar="SECONDS",
+                        help="sample time of every record [s], for files without a time column")
     fit_command.add_argument("--option", action="append", default=[], type=_option,
                              metavar="KEY=VALUE",
                              help="a fit option or hyst.fit keyword (repeatable; the value is "
@@ -802,7 +835,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         with _signals_end_the_run():
             rows = fit(arguments.data, arguments.model, input=arguments.input,
                        output=arguments.output, out=arguments.out,
-                       options=dict(arguments.option), scheduler=arguments.scheduler,
+                       options=_with_sample_time(dict(arguments.option), arguments.sample_time),
+                       time_column=arguments.time, scheduler=arguments.scheduler,
                        workers=arguments.workers, timeout=arguments.timeout,
                        record_timeout=arguments.record_timeout, progress=progress)
     except Interrupted as stop:

@@ -22,6 +22,7 @@
 #include "hyst/data/record_info.hpp"
 #include "hyst/data/resampling.hpp"
 #include "hyst/data/reversal_points.hpp"
+#include "hyst/data/sample_time.hpp"
 #include "hyst/io/aixacct.hpp"
 #include "hyst/io/csv.hpp"
 #include "hyst/io/data_file.hpp"
@@ -188,6 +189,15 @@ void bind_corrections(py::module_& d) {
   d.def("leakage_conductance", &data::leakage_conductance, "resistance"_a, "area_mm2"_a,
         "g = 1 / (R A) in uC/cm^2 per V s for R [Ohm] and an electrode area A [mm^2] (e.g. an "
         "aixACCT summary's Rav and a table's Area [mm2]).");
+  d.def(
+      "sample_time",
+      [](const InputArray& times) {
+        return data::uniform_sample_time(as_span(times, "times"), "times");
+      },
+      "times"_a,
+      "The uniform step [s] of a time column: increasing, finite, every step within 0.1 % of "
+      "the median (plus the rounding of 7 printed digits); hyst.Error names the first step "
+      "that is not.");
   d.def(
       "leakage_charge",
       [](const InputArray& voltage, double sample_time) {

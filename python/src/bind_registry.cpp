@@ -1,6 +1,8 @@
 // The model registry: any model by name, with parameters and state as Python dicts (JSON), model
 // files, and fitting through the registry.
 
+#include <cmath>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -12,15 +14,33 @@
 
 #include "bindings.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/data/sample_time.hpp"
 #include "hyst/export/export_c.hpp"
 #include "hyst/export/export_fmu.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/record_score.hpp"
+#include "hyst/registry/timed_simulation.hpp"
 
 namespace hyst::python {
 namespace {
+
+// The time axis of `sample_time=` or `time=` for a record of `samples` samples; none for neither.
+std::optional<data::TimeAxis> record_time_axis(std::optional<double> sample_time,
+                                               const std::optional<InputArray>& time,
+                                               std::size_t samples) {
+  if (sample_time && time) throw Error("give sample_time or time, not both");
+  if (sample_time) {
+    if (!(*sample_time > 0.0) || !std::isfinite(*sample_time))
+      throw Error(fmt::format("sample_time = {} must be finite and > 0", *sample_time));
+    return data::TimeAxis{*sample_time, {}};
+  }
+  if (!time) return std::nullopt;
+  if (static_cast<std::size_t>(time->size()) != samples)
+    throw Error(fmt::format("time has {} samples but input has {}", time->size(), samples));
+  return data::time_axis(as_span(*time, "time"), "time");
+}
 
 const ModelRegistry& registry() {
   return ModelRegistry::builtin();
@@ -244,18 +264,36 @@ void bind_registry(py::module_& module) {
       .def(
           "simulate",
           [](const DynamicModel& m, const InputArray& input, const py::handle& state,
-             bool return_state) -> py::object {
-            const auto run = m.clone();
+             bool return_state, std::optional<double> sample_time,
+             const std::optional<InputArray>& time) -> py::object {
+            auto run = m.clone();
             if (!state.is_none()) run->set_state(python_to_json(state, "state"));
-            auto output = simulate_into(*run, input);
+            const auto axis = record_time_axis(sample_time, time, input.size());
+            py::object output;
+            if (axis) {
+              const auto u = as_vector(input, "input");
+              std::vector<double> y(u.size());
+              {
+                py::gil_scoped_release release;
+                simulate_on_time_axis(run, *axis, u, y);
+              }
+              output = to_array(std::move(y));
+            } else {
+              output = simulate_into(*run, input);
+            }
             if (!return_state) return output;
             return py::make_tuple(output, json_to_python(run->state()));
           },
-          "input"_a, "state"_a = py::none(), "return_state"_a = false,
+          "input"_a, "state"_a = py::none(), "return_state"_a = false, py::kw_only(),
+          "sample_time"_a = py::none(), "time"_a = py::none(),
           "The outputs for `input`, starting from `state` (a dict) or, when it is None, from the "
           "start state. The model is unchanged, so every call starts afresh; with "
           "return_state=True returns (outputs, final state dict), and passing that state to the "
-          "next call continues the run.")
+          "next call continues the run. sample_time [s] or time (the samples' times [s], "
+          "increasing) give the record's time axis: a model with time in it (time_dependence "
+          "'continuous') is re-discretised at its step (run by run through a non-uniform time), a "
+          "'discrete' one (NARX) refuses another sample time, a rate-independent one ignores "
+          "time. Without either, the record is taken as sampled at the model's own sample time.")
       .def(
           "runner",
           [](const DynamicModel& m, const py::handle& state) {
@@ -266,6 +304,23 @@ void bind_registry(py::module_& module) {
           "state"_a = py::none(),
           "A stateful copy for step-by-step use (ModelRunner), starting from `state` or the start "
           "state.")
+      .def_property_readonly(
+          "time_dependence",
+          [](const DynamicModel& m) { return std::string(to_string(m.time_dependence())); },
+          "'none' (rate independent: time does not change the output), 'continuous' (lags or "
+          "ODEs, re-discretised at any sample time) or 'discrete' (NARX: its own sample time "
+          "only).")
+      .def_property_readonly(
+          "sample_time", [](const DynamicModel& m) { return m.sample_time(); },
+          "The sample time [s] the model is discretised at, or None (rate independent, or a "
+          "discrete model fitted without a time axis).")
+      .def(
+          "at_sample_time",
+          [](const DynamicModel& m, double seconds) { return m.at_sample_time(seconds); },
+          "seconds"_a,
+          "The same model and start state at the sample time `seconds`: re-discretised "
+          "(continuous), unchanged (rate independent), or hyst.Error naming both sample times "
+          "(discrete, at another one).")
       .def("parameter_count", &DynamicModel::parameter_count)
       .def("describe", &DynamicModel::describe, "A few lines on the model and its parameters.")
       .def("has_inverse", &DynamicModel::has_inverse)
@@ -293,13 +348,22 @@ void bind_registry(py::module_& module) {
   module.def(
       "evaluate",
       [](const DynamicModel& m, const InputArray& input, const InputArray& output,
-         std::string_view validation_start, std::string_view validation_align) {
+         std::string_view validation_start, std::string_view validation_align,
+         std::optional<double> sample_time, const std::optional<InputArray>& time) {
         const auto u = as_vector(input, "input");
         const auto y = as_vector(output, "output");
         const auto rule = saved_model_rule(validation_start, validation_align, "hyst.evaluate");
+        const auto axis = record_time_axis(sample_time, time, u.size());
+        if (axis && !axis->uniform() && m.time_dependence() != TimeDependence::none)
+          throw Error(
+              fmt::format("hyst.evaluate: time is not uniform (median step {:.6g} s) and "
+                          "model '{}' depends on time: resample the record, or use "
+                          "Model.simulate(time=...), which steps through it",
+                          axis->sample_time, m.name()));
+        const auto timed = axis ? at_record_sample_time(m.clone(), axis->sample_time) : m.clone();
         auto score = [&] {
           py::gil_scoped_release release;
-          return score_on_record(m, u, y, rule);
+          return score_on_record(*timed, u, y, rule);
         }();
         const auto figures = [](const PredictionScore& s) {
           py::dict d;
@@ -316,16 +380,21 @@ void bind_registry(py::module_& module) {
         for (const auto& yardstick : score.yardsticks)
           yardsticks[py::str(yardstick.name)] = figures(yardstick.score);
         out["yardsticks_on_this_record"] = yardsticks;
+        out["time_dependence"] = std::string(to_string(timed->time_dependence()));
+        out["sample_time"] = timed->sample_time();
         return out;
       },
       "model"_a, "input"_a, "output"_a, "validation_start"_a = "rest",
-      "validation_align"_a = "none",
+      "validation_align"_a = "none", py::kw_only(), "sample_time"_a = py::none(),
+      "time"_a = py::none(),
       "A single-input Model scored on a measured record as `hyst evaluate --model m.json --data "
       "r.csv` and `hyst fit --validation-data` score it: predicted from validation_start "
       "('rest', 'periodic' or 'file': the model's start state), aligned by validation_align "
       "('none' or 'first-sample'); a dict with rmse, nrmse_range_percent, nrmse_std_percent, "
       "max_error, samples, the prediction and yardsticks_on_this_record (its mean and a static "
-      "cubic y(v), fitted on this record).");
+      "cubic y(v), fitted on this record), and the model's time_dependence and the sample_time "
+      "it ran at. sample_time [s] or time (the samples' times [s]) give the record's time axis, "
+      "as for Model.simulate (a model with time in it needs a uniform one here).");
   module.def(
       "model_from_dict",
       [](const py::handle& document, std::string_view source) {
@@ -413,7 +482,8 @@ void bind_registry(py::module_& module) {
          const std::optional<InputArray>& validation_output, std::optional<std::string> cycles,
          bool detrend, std::string_view resample, double resample_step, double band,
          std::string_view validation_start, std::string_view validation_align,
-         const py::object& progress, const py::kwargs& options) {
+         const std::optional<InputArray>& time, const py::object& progress,
+         const py::kwargs& options) {
         const auto& entry = registry().find(name);
         if (!entry.can_fit()) {
           throw Error(fmt::format("model '{}' has no fitter", name));
@@ -431,6 +501,20 @@ void bind_registry(py::module_& module) {
         request.validation.start = validation_start_from_string(validation_start);
         request.validation.align = validation_alignment_from_string(validation_align);
         request.options = python_to_json(options, "");
+        if (time) {
+          if (request.options.contains("sample_time"))
+            throw Error("time and sample_time both give the sample time: give one");
+          if (!fits_sample_time(entry))
+            throw Error(
+                fmt::format("time: model '{}' has no sample time (its output depends on "
+                            "the order of the samples only)",
+                            name));
+          if (time->size() != input.size())
+            throw Error(
+                fmt::format("time has {} samples but input has {}", time->size(), input.size()));
+          request.options["sample_time"] =
+              data::uniform_sample_time(as_span(*time, "time"), "time");
+        }
         request.preprocessing.band = band;
         request.preprocessing.detrend = detrend;
         if (cycles) request.preprocessing.cycles = data::cycle_range_from_string(*cycles);
@@ -447,8 +531,11 @@ void bind_registry(py::module_& module) {
       "name"_a, "input"_a, "output"_a, "validation_input"_a = py::none(),
       "validation_output"_a = py::none(), py::kw_only(), "cycles"_a = py::none(),
       "detrend"_a = false, "resample"_a = "none", "resample_step"_a = 0.0, "band"_a = 0.0,
-      "validation_start"_a = "rest", "validation_align"_a = "none", "progress"_a = py::none(),
-      "Fits a registered model by name: returns (Model, FitReport). A separate validation record "
+      "validation_start"_a = "rest", "validation_align"_a = "none", "time"_a = py::none(),
+      "progress"_a = py::none(),
+      "Fits a registered model by name: returns (Model, FitReport). time (the samples' times "
+      "[s], uniform) gives a model with time in it its sample time (as the fit option "
+      "sample_time). A separate validation record "
       "is predicted from validation_start: \"rest\" (the model's initial state), \"periodic\" "
       "(the record's own periodic steady state) or \"continue\" (where the fit record ended), "
       "with validation_align=\"first-sample\" shifting the prediction to the measured first "

@@ -536,3 +536,26 @@ def test_an_interrupt_cancels_the_runs_tasks_on_the_callers_cluster(tmp_path):
             time.sleep(0.05)
         assert client.run_on_scheduler(tasks_left) == 0  # the other seven were cancelled
     assert not (tmp_path / "fits").exists(), list(os.walk(tmp_path / "fits"))
+
+
+def test_a_time_column_gives_each_record_its_own_sample_time(tmp_path):
+    creep = hyst.Model("pi_creep", {"thresholds": [0.0, 0.5], "weights": [1.0, 0.5],
+                                    "time_constants": [0.05, 0.3],
+                                    "creep_weights": [0.2, 0.1, 0.1, 0.05], "sample_time": 0.01})
+    for name, step in (("fast", 0.01), ("slow", 0.02)):
+        v = np.repeat([(k % 4) - 1.5 for k in range(12)], 25)
+        t = step * np.arange(v.size)
+        hyst.io.write_csv(tmp_path / f"{name}.csv",
+                          {"t": t, "v": v, "y": creep.simulate(v, sample_time=step)})
+    out = tmp_path / "fits"
+    rows = hyst.batch.fit(str(tmp_path / "*.csv"), "pi_creep", input="v", output="y", out=out,
+                          workers=0, time_column="t", options={"time_constants": [0.05, 0.3]})
+    assert [row.status for row in rows] == ["ok", "ok"]
+    steps = [hyst.load_model(row.model_file).sample_time for row in rows]
+    assert steps == [pytest.approx(0.01), pytest.approx(0.02)]
+    with pytest.raises(hyst.Error, match="time_column: model 'pi' has no sample time"):
+        hyst.batch.fit(str(tmp_path / "*.csv"), "pi", input="v", output="y", out=out,
+                       workers=0, time_column="t")
+    rows = hyst.batch.fit(str(tmp_path / "fast.csv"), "pi_creep", input="v", output="y",
+                          out=tmp_path / "missing", workers=0, time_column="time")
+    assert rows[0].status == "failed" and "time" in rows[0].reason

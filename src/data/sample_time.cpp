@@ -11,7 +11,9 @@
 
 namespace hyst::data {
 
-double uniform_sample_time(std::span<const double> times, std::string_view what) {
+namespace {
+
+void require_increasing_times(std::span<const double> times, std::string_view what) {
   if (times.size() < 2) {
     throw Error(
         fmt::format("{}: {} time values, a sample time needs at least 2", what, times.size()));
@@ -25,26 +27,63 @@ double uniform_sample_time(std::span<const double> times, std::string_view what)
                               k - 1, times[k - 1]));
     }
   }
-  // Each step against the median one, so that a single gap is named where it is.
+}
+
+double median_step(std::span<const double> times) {
   std::vector<double> steps(times.size() - 1);
   for (std::size_t k = 1; k < times.size(); ++k)
     steps[k - 1] = times[k] - times[k - 1];
-  std::vector<double> sorted = steps;
-  const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-  std::nth_element(sorted.begin(), middle, sorted.end());
-  const double median = *middle;
+  const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), middle, steps.end());
+  return *middle;
+}
+
+// The first k whose step departs from `median` by more than the tolerance plus the rounding of a
+// value printed with 7 significant digits; times.size() when none does.
+std::size_t first_nonuniform_step(std::span<const double> times, double median) {
   for (std::size_t k = 1; k < times.size(); ++k) {
     const double rounding = 1e-6 * std::max(std::abs(times[k]), std::abs(times[k - 1]));
-    if (std::abs(steps[k - 1] - median) > 1e-3 * median + rounding) {
-      throw Error(
-          fmt::format("{}: the sampling is not uniform: time[{}] - time[{}] = {:.6g} s but "
-                      "the median step is {:.6g} s (resample the record to a uniform time "
-                      "grid first)",
-                      what, k, k - 1, steps[k - 1], median));
-    }
+    if (std::abs(times[k] - times[k - 1] - median) > kSampleTimeTolerance * median + rounding)
+      return k;
   }
-  // The mean step: the most accurate from values printed with few digits.
+  return times.size();
+}
+
+// The mean step: the most accurate from values printed with few digits.
+double mean_step(std::span<const double> times) {
   return (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+}
+
+}  // namespace
+
+bool same_sample_time(double a, double b) {
+  return std::abs(a - b) <= kSampleTimeTolerance * std::max(std::abs(a), std::abs(b));
+}
+
+double uniform_sample_time(std::span<const double> times, std::string_view what) {
+  require_increasing_times(times, what);
+  // Each step against the median one, so that a single gap is named where it is.
+  const double median = median_step(times);
+  const std::size_t k = first_nonuniform_step(times, median);
+  if (k < times.size()) {
+    throw Error(
+        fmt::format("{}: the sampling is not uniform: time[{}] - time[{}] = {:.6g} s but "
+                    "the median step is {:.6g} s (resample the record to a uniform time "
+                    "grid first)",
+                    what, k, k - 1, times[k] - times[k - 1], median));
+  }
+  return mean_step(times);
+}
+
+TimeAxis time_axis(std::span<const double> times, std::string_view what) {
+  require_increasing_times(times, what);
+  const double median = median_step(times);
+  if (first_nonuniform_step(times, median) == times.size()) return {mean_step(times), {}};
+  TimeAxis axis{median, std::vector<double>(times.size())};
+  for (std::size_t k = 1; k < times.size(); ++k)
+    axis.steps[k] = times[k] - times[k - 1];
+  axis.steps[0] = axis.steps[1];
+  return axis;
 }
 
 }  // namespace hyst::data

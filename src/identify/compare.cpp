@@ -48,6 +48,7 @@ ComparedModel compare_one(const ModelEntry& entry, std::span<const double> input
         found != options.fit_options.end()) {
       request.options = found->second;
     }
+    request.options = with_sample_time(entry, std::move(request.options), options.sample_time);
     const auto started = Clock::now();
     auto outcome = fit_model(entry, request);
     row.fit_seconds = seconds_since(started);

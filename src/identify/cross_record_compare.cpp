@@ -76,6 +76,7 @@ void run_round(const ModelEntry& entry, const FitRound& round, const CrossRecord
   if (const auto found = options.fit_options.find(entry.name); found != options.fit_options.end()) {
     request.options = found->second;
   }
+  request.options = with_sample_time(entry, std::move(request.options), options.sample_time);
   const auto started = Clock::now();
   const auto outcome = fit_model(entry, request);
   row.fit_seconds += std::chrono::duration<double>(Clock::now() - started).count();

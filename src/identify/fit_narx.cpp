@@ -87,6 +87,7 @@ Narx::Params structure(std::span<const double> input, std::span<const double> ou
   p.input_scale = deviation_of(input, p.input_offset);
   p.output_offset = mean_of(output);
   p.output_scale = deviation_of(output, p.output_offset);
+  p.sample_time = options.sample_time;
   if (!(p.input_scale > 0.0)) {
     throw Error(fmt::format("NARX fit: the input is constant (all {} samples = {}); a model of "
                             "the input-output relation needs a varying input",

@@ -77,6 +77,11 @@ void validate(const Narx::Params& p) {
     throw Error(fmt::format("NARX output_scale = {} must be finite and > 0", p.output_scale),
                 "output_scale");
   }
+  if (!std::isfinite(p.sample_time) || p.sample_time < 0.0) {
+    throw Error(
+        fmt::format("NARX sample_time = {} must be finite and >= 0 (0: not stated)", p.sample_time),
+        "sample_time");
+  }
 }
 
 void require_length(const std::vector<double>& values, std::size_t expected,

@@ -11,7 +11,8 @@
 namespace hyst::detail {
 namespace {
 
-struct BoucWenOscillatorCodec : CodecOf<BoucWenOscillator, "bouc_wen_oscillator"> {
+struct BoucWenOscillatorCodec : CodecOf<BoucWenOscillator, "bouc_wen_oscillator">,
+                                ContinuousTimeCodec<BoucWenOscillator> {
   static FieldTable<P> parameters() {
     return FieldTable<P>()
         .add("mass", &P::mass, "kg", "m > 0")

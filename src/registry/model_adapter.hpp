@@ -18,6 +18,10 @@
 //     // a run that has not run away can reach, and how that bound is stated in messages.
 //     static double runaway_limit(const Model&);
 //     static std::string runaway_explanation(const Model&);
+//     // Optional, for models whose output depends on time (default TimeDependence::none):
+//     static constexpr TimeDependence time_dependence = TimeDependence::continuous;
+//     static std::optional<double> sample_time(const Model&);  // [s]
+//     static Model at_sample_time(const Model&, double seconds);  // continuous models only
 //   };
 
 #include <algorithm>
@@ -40,6 +44,36 @@
 #include "hyst/registry/model_registry.hpp"
 
 namespace hyst::detail {
+
+// Throws hyst::Error unless `seconds` is a sample time (finite, > 0); `model` names the model.
+void require_sample_time(std::string_view model, double seconds);
+// Throws hyst::Error naming both sample times unless `seconds` is within 0.1 % of `own`, the
+// sample time of the discrete model `model` (none: fitted without a time axis, any is taken).
+void require_own_sample_time(std::string_view model, std::optional<double> own, double seconds);
+
+// The time hooks of a codec whose model is continuous in time, discretised at the sample time of
+// its Params (or of its Params' pi_creep): re-discretised by the model's at_sample_time() where it
+// has one (the creep models: exact decays), else rebuilt from its Params at the new step.
+template <class M>
+struct ContinuousTimeCodec {
+  static constexpr TimeDependence time_dependence = TimeDependence::continuous;
+  static std::optional<double> sample_time(const M& model) {
+    if constexpr (requires { model.params().pi_creep.sample_time; }) {
+      return model.params().pi_creep.sample_time;
+    } else {
+      return model.params().sample_time;
+    }
+  }
+  static M at_sample_time(const M& model, double seconds) {
+    if constexpr (requires { model.at_sample_time(seconds); }) {
+      return model.at_sample_time(seconds);
+    } else {
+      auto params = model.params();
+      params.sample_time = seconds;
+      return M(std::move(params));
+    }
+  }
+};
 
 // A codec's name as a template argument: CodecOf<BoucWen, "bouc_wen">.
 template <std::size_t N>
@@ -99,6 +133,31 @@ class ModelAdapter final : public DynamicModel {
                                 input[k], output[k]),
                     "input");
       }
+    }
+  }
+  TimeDependence time_dependence() const override {
+    if constexpr (requires { Codec::time_dependence; }) {
+      return Codec::time_dependence;
+    } else {
+      return TimeDependence::none;
+    }
+  }
+  std::optional<double> sample_time() const override {
+    if constexpr (requires { Codec::sample_time(model_); }) {
+      return Codec::sample_time(model_);
+    } else {
+      return std::nullopt;
+    }
+  }
+  std::unique_ptr<DynamicModel> at_sample_time(double seconds) const override {
+    require_sample_time(Codec::name, seconds);
+    if constexpr (requires { Codec::at_sample_time(model_, seconds); }) {
+      static_assert(Codec::time_dependence == TimeDependence::continuous);
+      return std::make_unique<ModelAdapter>(Codec::at_sample_time(model_, seconds), state_);
+    } else {
+      if (time_dependence() == TimeDependence::discrete)
+        require_own_sample_time(Codec::name, sample_time(), seconds);
+      return clone();
     }
   }
   std::size_t parameter_count() const override { return Codec::parameter_count(model_); }

@@ -1,5 +1,7 @@
 #include "hyst/registry/model_registry.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
@@ -59,6 +61,18 @@ void ModelRegistry::add(ModelEntry entry) {
     throw Error(fmt::format("model '{}' is registered twice", entry.name));
   }
   entries_.push_back(std::move(entry));
+}
+
+bool fits_sample_time(const ModelEntry& entry) {
+  return std::any_of(entry.fit_options.begin(), entry.fit_options.end(),
+                     [](const ParameterInfo& option) { return option.name == "sample_time"; });
+}
+
+nlohmann::json with_sample_time(const ModelEntry& entry, nlohmann::json options,
+                                std::optional<double> seconds) {
+  if (seconds && fits_sample_time(entry) && !options.contains("sample_time"))
+    options["sample_time"] = *seconds;
+  return options;
 }
 
 }  // namespace hyst

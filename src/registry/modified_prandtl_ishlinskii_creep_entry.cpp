@@ -15,7 +15,8 @@
 namespace hyst::detail {
 namespace {
 
-struct ModifiedPiCreepCodec : CodecOf<ModifiedPrandtlIshlinskiiCreep, "modified_pi_creep"> {
+struct ModifiedPiCreepCodec : CodecOf<ModifiedPrandtlIshlinskiiCreep, "modified_pi_creep">,
+                              ContinuousTimeCodec<ModifiedPrandtlIshlinskiiCreep> {
   // The file's fields are flat: those of the PI with creep (its offset "pi_offset"), the dead
   // zones', the output offset and limits.
   static FieldTable<P> parameters() {

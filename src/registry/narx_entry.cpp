@@ -19,6 +19,11 @@ namespace {
 constexpr double kRunawayScales = 1e3;
 
 struct NarxCodec : CodecOf<Narx, "narx"> {
+  static constexpr TimeDependence time_dependence = TimeDependence::discrete;
+  static std::optional<double> sample_time(const Model& model) {
+    const double seconds = model.params().sample_time;
+    return seconds > 0.0 ? std::optional<double>(seconds) : std::nullopt;
+  }
   static FieldTable<P> parameters() {
     return FieldTable<P>()
         .add("input_lags", &P::input_lags, "", "n_u: past inputs v[k-1..k-n_u] (v[k] always used)")
@@ -34,6 +39,10 @@ struct NarxCodec : CodecOf<Narx, "narx"> {
         .add("output_offset", &P::output_offset, "output units", "normalisation y_off",
              Presence::optional)
         .add("output_scale", &P::output_scale, "output units", "normalisation y_scale > 0",
+             Presence::optional)
+        .add("sample_time", &P::sample_time, "s",
+             "Ts of the samples the lags count; 0: not stated (any record is run sample by "
+             "sample)",
              Presence::optional);
   }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
@@ -97,7 +106,9 @@ FieldTable<NarxFitOptions> narx_fit_option_table() {
       .add("patience", &O::patience, "", "early stopping: iterations without improvement")
       .add("early_stopping_fraction", &O::early_stopping_fraction, "",
            "end of the fit part monitored in free run")
-      .add("regularization", &O::regularization, "", "ridge weight on the network weights");
+      .add("regularization", &O::regularization, "", "ridge weight on the network weights")
+      .add("sample_time", &O::sample_time, "s",
+           "Ts of the record, stored in the model (0: not stated)");
 }
 
 }  // namespace

@@ -14,7 +14,8 @@
 namespace hyst::detail {
 namespace {
 
-struct PiCreepCodec : CodecOf<PrandtlIshlinskiiCreep, "pi_creep"> {
+struct PiCreepCodec : CodecOf<PrandtlIshlinskiiCreep, "pi_creep">,
+                      ContinuousTimeCodec<PrandtlIshlinskiiCreep> {
   static FieldTable<P> parameters() { return pi_creep_fields("offset", "y_off"); }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return creep_state_to_json(state);

@@ -11,7 +11,8 @@
 namespace hyst::detail {
 namespace {
 
-struct RateDependentPiCodec : CodecOf<RateDependentPrandtlIshlinskii, "rate_dependent_pi"> {
+struct RateDependentPiCodec : CodecOf<RateDependentPrandtlIshlinskii, "rate_dependent_pi">,
+                              ContinuousTimeCodec<RateDependentPrandtlIshlinskii> {
   static FieldTable<P> parameters() {
     return FieldTable<P>()
         .add("thresholds", &P::thresholds, "input units",

@@ -737,6 +737,74 @@ case_validation_rule() {
     --model pzt.json --data "$mat" --input Vplus_1kv
 }
 
+case_time_axis() {
+  # A creep model fitted on a record at 10 ms runs on the same signal at 100 ms (--time) as a
+  # physical model: its output at the common instants is the one at 10 ms (a staircase whose
+  # steps lie on the 100 ms grid: exact), not the one with 100 ms taken as 10 ms.
+  awk 'BEGIN { print "t,v"; for (k = 0; k < 600; ++k) printf "%.6f,%.17g\n", k * 0.01, (int(k / 50) % 4) - 1.5 }' > steps.csv
+  cat > true.json <<'JSON'
+{"model": "pi_creep", "version": 1, "params": {"thresholds": [0, 0.5], "weights": [1, 0.5],
+ "time_constants": [0.05, 0.3], "creep_weights": [0.2, 0.1, 0.1, 0.05], "sample_time": 0.01}}
+JSON
+  expect_ok "$HYST" simulate --model true.json --input steps.csv --column v --time t --out fine.csv
+  awk -F, 'NR == 1 || (NR - 2) % 10 == 9 { print }' fine.csv > coarse.csv
+  run "$HYST" fit pi_creep --data fine.csv --input v --output y --out untimed.json
+  [ "$STATUS" -eq 0 ] || fail "untimed fit: exit status $STATUS"
+  grep -qF "hyst: warning: model 'pi_creep' depends on time but fine.csv gives no time axis (--time COLUMN or --sample-time SECONDS): the sample time is taken as 1 s, so its time constants count samples (columns that look like time: 't')" \
+    "$WORK/stderr" || fail "no warning for a fit without a time axis: $(cat "$WORK/stderr")"
+  expect_ok "$HYST" fit pi_creep --data fine.csv --input v --output y --time t \
+    --option time_constants=[0.05,0.3] --out creep.json
+  grep -q '"sample_time": 0.01' creep.json || fail "creep.json has no sample time 0.01"
+  expect_ok "$HYST" simulate --model creep.json --input fine.csv --column v --time t --out yf.csv
+  expect_ok "$HYST" simulate --model creep.json --input coarse.csv --column v --time t --out yc.csv
+  head -1 yc.csv | grep -q '^t,v,y$' || fail "simulate drops the time column: $(head -1 yc.csv)"
+  awk -F, 'NR > 1 && (NR - 2) % 10 == 9 { print $3 }' yf.csv > at_fine.txt
+  awk -F, 'NR > 1 { print $3 }' yc.csv > at_coarse.txt
+  paste at_fine.txt at_coarse.txt | awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > worst) worst = d }
+      END { if (worst > 1e-9) { print "largest difference " worst; exit 1 } }' ||
+    fail "the coarse run differs from the fine one at the common instants"
+  # Without --time the coarse record runs at the model's 10 ms, and a note says so.
+  run "$HYST" simulate --model creep.json --input coarse.csv --column v --out yu.csv
+  grep -q "^hyst: note: the record has no time axis .* taken as sampled at the model's sample time 0.01 s" \
+    "$WORK/stderr" || fail "no note without a time axis: $(cat "$WORK/stderr")"
+  awk -F, 'NR > 1 { print $2 }' yu.csv | paste at_fine.txt - | awk '{ d = $1 - $2; if (d < 0) d = -d
+      if (d > worst) worst = d } END { exit !(worst > 1e-3) }' ||
+    fail "the untimed run should differ from the timed one"
+  # --sample-time is the same as a uniform time column; both at once are refused.
+  expect_ok "$HYST" simulate --model creep.json --input coarse.csv --column v --sample-time 0.1 --out ys.csv
+  awk -F, 'NR > 1 { print $2 }' ys.csv | paste at_coarse.txt - | awk '$1 != $2 { exit 1 }' ||
+    fail "--sample-time 0.1 differs from --time t"
+  expect_error 2 "--time excludes --sample-time" -- "$HYST" simulate --model creep.json --input coarse.csv \
+    --column v --time t --sample-time 0.1 --out yx.csv
+  # evaluate and invert take the record's time; evaluate says how.
+  expect_ok "$HYST" evaluate --model creep.json --data coarse.csv --input v --output y --time t
+  expect_stdout "time:  sampled at 0.1 s (time column 't'); the model is continuous time, run at 0.1 s"
+  expect_ok "$HYST" invert --model creep.json --target yc.csv --column y --time t --out vc.csv
+  head -1 vc.csv | grep -q '^t,y,v$' || fail "invert drops the time column: $(head -1 vc.csv)"
+  awk -F, 'NR > 1 { print $3 }' vc.csv > inverse.txt
+  awk -F, 'NR > 1 { print $2 }' coarse.csv | paste - inverse.txt | awk '{
+      d = $1 - $2; if (d < 0) d = -d; if (d > worst) worst = d } END { exit !(worst < 1e-9) }' ||
+    fail "the inverse at 0.1 s does not return the coarse input"
+  # A non-uniform record: simulate steps through it, evaluate refuses it for a creep model.
+  awk -F, 'NR == 1 { print; next } NR <= 40 || NR % 2 == 0 { print }' fine.csv > uneven.csv
+  expect_ok "$HYST" simulate --model creep.json --input uneven.csv --column v --time t --out yn.csv
+  expect_error 1 "is not uniform" "needs a uniform time axis" -- "$HYST" evaluate \
+    --model creep.json --data uneven.csv --input v --output y --time t
+  # A rate-independent model ignores time, without a note.
+  expect_ok "$HYST" fit pi --data fine.csv --input v --output y --out pi.json
+  run "$HYST" simulate --model pi.json --input coarse.csv --column v --out yp.csv
+  [ ! -s "$WORK/stderr" ] || fail "a rate-independent model got a note: $(cat "$WORK/stderr")"
+  expect_error 1 "--time: model 'pi' has no sample time" -- "$HYST" fit pi --data fine.csv \
+    --input v --output y --time t --out pi2.json
+  # A NARX stores its sample time and refuses another.
+  run "$HYST" fit narx --data fine.csv --input v --output y --time t \
+    --option hidden_sizes=[3] --option max_iterations=5 --option simulation_iterations=0 --out narx.json
+  [ "$STATUS" -eq 0 ] || fail "narx fit: exit status $STATUS: $(cat "$WORK/stderr")"
+  grep -q '"sample_time": 0.01' narx.json || fail "narx.json has no sample time"
+  expect_error 1 "model 'narx' was identified at the sample time 0.01 s but the record is sampled at 0.1 s" -- \
+    "$HYST" simulate --model narx.json --input coarse.csv --column v --time t --out yn2.csv
+}
+
 case_fitted_domain() {
   # A model fitted on inputs within +-1 (a sine) records that domain; a record of amplitude 2
   # leaves it: one warning line each from simulate, evaluate and invert (--strict: exit 1).

@@ -3,6 +3,7 @@
 // CSV and the comparison plots.
 
 #include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../data_source.hpp"
+#include "../record_time.hpp"
 #include "commands.hpp"
 #include "hyst/identify/compare.hpp"
 #include "hyst/identify/cross_record_compare.hpp"
@@ -46,8 +48,25 @@ struct CompareCommandOptions {
   bool leave_one_out = false;
   std::string validation_start = "rest";
   std::string validation_align = "none";
+  TimeOptions time;
   ProgressFlags progress;
 };
+
+//! The sample time of the records of `data` (--time, --sample-time, an aixACCT 'Time'
+//! column): the models with time in them are fitted at it. Fits need a uniform time axis.
+std::optional<double> records_sample_time(const DataSource& data, const TimeOptions& options,
+                                          std::size_t samples) {
+  const auto time = record_time(data, options, samples);
+  if (!time) return std::nullopt;
+  if (!time->axis.uniform()) {
+    throw Error(
+        fmt::format("{}: the {} is not uniform (median step {:.6g} s): the models with "
+                    "time in them are fitted at one sample time (resample the record; "
+                    "rate-independent models need no --time)",
+                    data.path().string(), time->source, time->axis.sample_time));
+  }
+  return time->axis.sample_time;
+}
 
 std::vector<std::string> split_list(const std::string& text, std::string_view option,
                                     std::string_view example) {
@@ -127,6 +146,7 @@ void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions c
   io::OutputSet set(folder, names);
   const DataSource data(options.data, options.table);
   const auto fit = read_records(data, options.fit_records, "--fit-records");
+  compare.sample_time = records_sample_time(data, options.time, fit.front().input.size());
   ProgressDisplay display("hyst compare", options.progress.mode());
   compare.progress = display.callback();
   const auto comparison =
@@ -191,6 +211,7 @@ void run(const CompareCommandOptions& options) {
 
   const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
+  compare.sample_time = records_sample_time(data, options.time, record.input.size());
   ProgressDisplay display("hyst compare", options.progress.mode());
   compare.progress = display.callback();
   const auto comparison = compare_models(record.input, record.output, compare);
@@ -302,6 +323,7 @@ void add_compare_command(CLI::App& app) {
       ->allow_extra_args(false);
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
+  add_time_options(*command, options->time, "--data");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
   add_progress_flags(*command, options->progress);
   command
@@ -330,7 +352,11 @@ state runs on across each junction) and every model is fitted once on them; each
 --validate-records is predicted by the rule of --validation-start/--validation-align (as in
 'hyst fit --validation-data'). --leave-one-out holds each record of --fit-records out in turn.
 The table ranks by the mean held-out NRMSE [%] and gives the worst and every record's; tables
-only (ranking.md, ranking.csv), no plots.)");
+only (ranking.md, ranking.csv), no plots.
+Time: the models with time in them (creep, rate dependence, the Bouc-Wen oscillator; 'hyst
+models NAME' lists the fit option sample_time) are fitted at the sample time of --time COLUMN
+or --sample-time SECONDS (an aixACCT export's 'Time' column by default), unless --option
+MODEL.sample_time=... says otherwise; without any, their time constants count samples.)");
   command->callback([options] { run(*options); });
 }
 

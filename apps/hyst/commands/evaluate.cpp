@@ -10,9 +10,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "../data_source.hpp"
 #include "../dynamic_data.hpp"
 #include "commands.hpp"
 #include "evaluate_record.hpp"
+#include "hyst/data/sample_time.hpp"
 #include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/io/json_text.hpp"
@@ -33,6 +35,7 @@ struct EvaluateOptions {
   std::optional<std::size_t> table;
   std::string validation_start = "rest";
   std::string validation_align = "none";
+  TimeOptions time;
 };
 
 //! The dynamic MIMO models that can be scored here.
@@ -81,8 +84,33 @@ void run_single_input(const EvaluateOptions& options) {
                    .output = options.data.output_columns,
                    .start = options.validation_start,
                    .align = options.validation_align,
+                   .time = options.time,
                    .json = options.json,
                    .strict = options.strict});
+}
+
+//! A discrete dynamic model runs at its own sample time only: --sample-time, or the step of
+//! --time COLUMN of the first --data file, must be it.
+void check_system_sample_time(const EvaluateOptions& options, double own) {
+  double given = options.time.sample_time;
+  std::string source = fmt::format("--sample-time {:g}", given);
+  if (!options.time.column.empty()) {
+    if (options.data.data.empty())
+      throw Error(fmt::format("--time {}: NumPy data have no time column; give --sample-time",
+                              options.time.column));
+    const DataSource data(options.data.data.front());
+    given = data::uniform_sample_time(
+        data.column(options.time.column),
+        fmt::format("{}: time column '{}'", options.data.data.front(), options.time.column));
+    source = fmt::format("time column '{}'", options.time.column);
+  }
+  if (given > 0.0 && !data::same_sample_time(given, own)) {
+    throw Error(
+        fmt::format("{}: the model is discrete, identified at the sample time {:.6g} s, "
+                    "but the data are sampled at {:.6g} s ({}): resample the data or "
+                    "fit the model at {:.6g} s",
+                    options.model, own, given, source, given));
+  }
 }
 
 SimulationScore score(const SystemModel& model, const PeriodicExperiment& experiment,
@@ -129,6 +157,7 @@ void run(const EvaluateOptions& options) {
                     "--transient",
                     options.model));
   const auto& model = *system;
+  check_system_sample_time(options, linear_block(model).sample_time());
   const auto experiments = read_experiments(options.data);
   const auto& experiment = experiments.at(0);
   const auto result = [&] {
@@ -198,6 +227,7 @@ void add_evaluate_command(CLI::App& app) {
                    "Single-input models: none, or first-sample (the prediction shifted to the "
                    "measured first sample)")
       ->capture_default_str();
+  add_time_options(*command, options->time, "--data");
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command->add_flag("--strict", options->strict,
                     "Exit with an error instead of a warning when the model is unstable in free "

@@ -1,5 +1,7 @@
 #include "evaluate_record.hpp"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +13,7 @@
 #include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/record_score.hpp"
+#include "hyst/registry/timed_simulation.hpp"
 
 namespace hyst::cli {
 namespace {
@@ -26,6 +29,19 @@ std::string record_rule_text(const RecordEvaluation& options, const ValidationRu
       options.align);
 }
 
+// The record's time axis and how the model took it, in words.
+std::string time_text(const DynamicModel& model, const std::optional<RecordTime>& time) {
+  const std::string record =
+      time ? fmt::format("sampled at {:.6g} s{} ({})", time->axis.sample_time,
+                         time->axis.uniform() ? "" : " (median step; not uniform)", time->source)
+           : std::string("no time axis (--time COLUMN or --sample-time SECONDS)");
+  if (model.time_dependence() == TimeDependence::none)
+    return record + "; the model is rate independent (time does not change its output)";
+  const auto own = model.sample_time();
+  return fmt::format("{}; the model is {}{}", record, time_dependence_name(model.time_dependence()),
+                     own ? fmt::format(", run at {:.6g} s", *own) : std::string());
+}
+
 nlohmann::json prediction_json(const PredictionScore& s) {
   return {{"rmse", s.metrics.rmse},
           {"nrmse_range_percent", s.metrics.nrmse_percent},
@@ -36,9 +52,10 @@ nlohmann::json prediction_json(const PredictionScore& s) {
 }  // namespace
 
 void evaluate_record(const RecordEvaluation& options) {
-  const auto model = load_model(options.model);
   const DataSource source(options.data, options.table);
   const auto record = read_column_pair(source, options.input, options.output, "data");
+  const auto time = record_time(source, options.time, record.input.size());
+  const auto model = model_for_record(load_model(options.model), time, "hyst evaluate");
   const auto rule = saved_model_rule(options.start, options.align, "'hyst evaluate'");
   RecordScore score;
   try {
@@ -65,6 +82,11 @@ void evaluate_record(const RecordEvaluation& options) {
     out["samples"] = score.model.metrics.samples;
     out["validation_start"] = options.start;
     out["validation_align"] = options.align;
+    out["time_dependence"] = time_dependence_name(model->time_dependence());
+    out["sample_time"] = time ? nlohmann::json{{"seconds", time->axis.sample_time},
+                                               {"source", time->source},
+                                               {"uniform", time->axis.uniform()}}
+                              : nlohmann::json(nullptr);
     out["domain"] = domain ? nlohmann::json{{"known", true},
                                             {"inside", domain_check.inside()},
                                             {"message", domain_check.message(record.input.size())}}
@@ -80,6 +102,7 @@ void evaluate_record(const RecordEvaluation& options) {
              model->parameter_count());
   fmt::print("data:  {}: input '{}', output '{}', {} samples\n", options.data, options.input,
              options.output, record.input.size());
+  fmt::print("time:  {}\n", time_text(*model, time));
   fmt::print("rule:  {}\n\n", record_rule_text(options, rule));
   fmt::print("{:<36} {:>13} {:>14} {:>12} {:>13}\n", "predictor", "RMSE" + in_unit, "NRMSE (range)",
              "NRMSE (std)", "max error" + in_unit);

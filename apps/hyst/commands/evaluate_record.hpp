@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "../record_time.hpp"
+
 namespace hyst::cli {
 
 struct RecordEvaluation {
@@ -16,6 +18,7 @@ struct RecordEvaluation {
   std::string output;                //!< measured output column
   std::string start = "rest";        //!< rest, periodic or file
   std::string align = "none";        //!< none or first-sample
+  TimeOptions time;                  //!< the record's time axis
   bool json = false;
   bool strict = false;  //!< inputs beyond the fitted domain are an error, not a warning
 };

@@ -54,8 +54,9 @@ struct FitOptions {
   std::string forc;  //!< --forc FILE: the FORC route (fit_forc.hpp)
   std::string drift = "none";
   std::size_t hold_out_every = 0;
-  std::string time;    //!< --time COLUMN: the record's sample time from its time column
-  std::string tables;  //!< --tables 6,1: several tables of an aixACCT export fitted together
+  std::string time;          //!< --time COLUMN: the record's sample time from its time column
+  double sample_time = 0.0;  //!< --sample-time SECONDS (0: not given)
+  std::string tables;        //!< --tables 6,1: several tables of an aixACCT export fitted together
   ProgressFlags progress;
 };
 
@@ -138,26 +139,72 @@ std::string models_with_a_sample_time(const ModelRegistry& registry) {
   return list;
 }
 
-//! The fit option sample_time of a model whose fit has one, read from the record's time column:
-//! --time COLUMN, or else the "Time" column of an aixACCT export when the option is not given.
-//! Its source goes into `data_info`. Throws hyst::Error for a time column that is not uniform,
-//! a model without a sample time, or a sample time given twice.
+// The columns of `data` whose name says time ("Time", "t", "time [s]", ...), for a hint.
+std::string time_like_columns(const DataSource& data) {
+  std::string list;
+  for (const auto& name : data.columns()) {
+    std::string lower;
+    for (char c : name.substr(0, name.find(' ')))
+      lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "t" || lower == "time" || lower == "t_s" || lower == "time_s")
+      list += (list.empty() ? "'" : ", '") + name + "'";
+  }
+  return list;
+}
+
+// The fit option's default sample time as its schema states it.
+std::string default_sample_time(const ModelEntry& entry) {
+  for (const auto& option : entry.fit_options) {
+    if (option.name == "sample_time")
+      return option.default_value.empty() ? "1" : option.default_value;
+  }
+  return "1";
+}
+
+//! The fit option sample_time of a model whose fit has one: --sample-time, --time COLUMN, or else
+//! the "Time" column of an aixACCT export when the option is not given. Its source goes into
+//! `data_info`; a model whose output depends on time fitted without any of them gets a warning
+//! that its time constants are in samples of the default step. Throws hyst::Error for a time
+//! column that is not uniform, a model without a sample time, or a sample time given twice.
 void take_sample_time(const FitOptions& options, const ModelEntry& entry, const DataSource& data,
                       nlohmann::json& fit_json, nlohmann::json& data_info) {
+  const bool timed = has_fit_option(entry, "sample_time");
   const bool given = fit_json.contains("sample_time");
-  if (options.time.empty()) {
-    if (given || !has_fit_option(entry, "sample_time") || data.aixacct() == nullptr ||
-        !data.has_column("Time") || !options.resample.empty()) {
-      return;
-    }
-  } else if (!has_fit_option(entry, "sample_time")) {
+  const bool from_option = options.sample_time > 0.0;
+  if ((from_option || !options.time.empty()) && !timed) {
     throw Error(
-        fmt::format("--time: model '{}' has no sample time (its output depends on the "
-                    "order of the samples only); models with one: {}",
-                    entry.name, models_with_a_sample_time(ModelRegistry::builtin())));
-  } else if (given) {
-    throw Error("--time and --option sample_time both give the sample time: give one");
-  } else if (!options.resample.empty()) {
+        fmt::format("{}: model '{}' has no sample time (its output depends on the order of the "
+                    "samples only); models with one: {}",
+                    from_option ? "--sample-time" : "--time", entry.name,
+                    models_with_a_sample_time(ModelRegistry::builtin())));
+  }
+  if (int(given) + int(from_option) + int(!options.time.empty()) > 1) {
+    throw Error(
+        "--time, --sample-time and --option sample_time each give the sample time: give one");
+  }
+  if (!timed) return;
+  if (given) {
+    data_info["sample_time"] = {{"seconds", fit_json["sample_time"]}, {"source", "--option"}};
+    return;
+  }
+  if (from_option) {
+    fit_json["sample_time"] = options.sample_time;
+    data_info["sample_time"] = {{"seconds", options.sample_time}, {"source", "--sample-time"}};
+    return;
+  }
+  const bool aixacct_time = data.aixacct() != nullptr && data.has_column("Time");
+  if (options.time.empty() && (!aixacct_time || !options.resample.empty())) {
+    const std::string hint = time_like_columns(data);
+    warn(fmt::format(
+        "model '{}' depends on time but {} gives no time axis (--time COLUMN or --sample-time "
+        "SECONDS): the sample time is taken as {} s, so its time constants count samples{}",
+        entry.name, options.data, default_sample_time(entry),
+        hint.empty() ? "" : fmt::format(" (columns that look like time: {})", hint)));
+    data_info["sample_time"] = {{"seconds", default_sample_time(entry)},
+                                {"source", "none given: the fit option's default"}};
+    return;
+  }
+  if (!options.resample.empty()) {
     throw Error(
         "--time with --resample: resampling along the input makes the samples "
         "non-uniform in time, so the record has no sample time");
@@ -460,6 +507,11 @@ void add_fit_command(CLI::App& app) {
                       "as one model (one actuator at several rates), each at the sample time of "
                       "its 'Time' column; for the models with a fit of several records "
                       "(pi_creep, modified_pi_creep, butterfly_strain)");
+  command
+      ->add_option("--sample-time", options->sample_time,
+                   "Sample time of --data [s] for files without a time column (the fit option "
+                   "sample_time)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--time", options->time,
                       "Time column of --data [s]: its uniform step is the fit option sample_time "
                       "of a model that has one (an aixACCT export's 'Time' column is used by "

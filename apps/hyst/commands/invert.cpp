@@ -2,8 +2,10 @@
 // compensation), within optional input limits.
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 
 #include "../data_source.hpp"
 #include "../domain_warning.hpp"
+#include "../record_time.hpp"
 #include "commands.hpp"
 #include "hyst/io/csv.hpp"
 #include "hyst/registry/fitted_domain_file.hpp"
@@ -27,6 +30,8 @@ struct InvertOptions {
   std::string input_column = "v";
   double input_min = -std::numeric_limits<double>::infinity();
   double input_max = std::numeric_limits<double>::infinity();
+  TimeOptions time;
+  std::optional<std::size_t> table;
   bool strict = false;
 };
 
@@ -38,7 +43,7 @@ void run(const InvertOptions& options) {
   }
   io::check_outputs({{options.model, "--model"}, {options.target, "--target"}},
                     {{options.out, "--out"}});
-  const auto model = load_model(options.model);
+  auto model = load_model(options.model);
   if (!model->has_inverse()) {
     // inverse() says why (e.g. which weight breaks invertibility).
     try {
@@ -49,22 +54,24 @@ void run(const InvertOptions& options) {
     }
     throw Error(fmt::format("{}: the {} model has no inverse", options.model, model->name()));
   }
-  std::unique_ptr<DynamicInverse> inverse;
-  try {
-    inverse = model->inverse({options.input_min, options.input_max});
-  } catch (const Error& error) {
-    throw Error(fmt::format("{}: {}", options.model, error.what()));
-  }
-
-  const DataSource source(options.target);
+  const DataSource source(options.target, options.table);
   const auto column = source.choose(options.column, "y", "--column");
   if (options.input_column == column) {
     throw Error(fmt::format(
         "--input-column '{}' is the name of the target column; choose another input name",
         options.input_column));
   }
-
   auto target = source.column(column);
+  // The inverse of a model with time in it holds at the record's sample time.
+  const auto time = record_time(source, options.time, target.size());
+  std::unique_ptr<DynamicInverse> inverse;
+  try {
+    inverse = model_for_record(std::move(model), time, "hyst invert")
+                  ->inverse({options.input_min, options.input_max});
+  } catch (const Error& error) {
+    throw Error(fmt::format("{}: {}", options.model, error.what()));
+  }
+
   // Targets beyond every output the fit measured: checked now, said after the output is written.
   const auto domain = load_fitted_domain(options.model);
   const DomainCheck domain_check = domain ? check_targets(*domain, target) : DomainCheck{};
@@ -78,6 +85,8 @@ void run(const InvertOptions& options) {
 
   io::Table table;
   table.source = options.out;
+  if (time && !time->times.empty() && time->column != column)
+    table.add_column(time->column, time->times);
   table.add_column(column, std::move(target));
   table.add_column(options.input_column, std::move(input));
   write_text_output(options.out, io::format_csv(table));
@@ -125,6 +134,9 @@ void add_invert_command(CLI::App& app) {
       ->required();
   command->add_option("--input-column", options->input_column, "Name of the input column")
       ->capture_default_str();
+  add_time_options(*command, options->time, "--target");
+  command->add_option("--table", options->table,
+                      "Measurement table of an aixACCT export with several (1, 2, ...)");
   command->add_option("--input-min", options->input_min, "Lowest admissible input (default: none)");
   command->add_option("--input-max", options->input_max,
                       "Highest admissible input (default: none)");
@@ -133,7 +145,10 @@ void add_invert_command(CLI::App& app) {
                     "model was fitted on (the output is written)");
   command->footer(R"(Example:
   hyst invert --model m.json --target y.csv --column y --out v.csv --input-min -10 --input-max 10
-      v.csv gets the columns y (the target) and v (the input). The inverse starts consistent
+      v.csv gets the columns y (the target) and v (the input), and with --time t the time
+      column t. The inverse of a model with time in it (creep) is taken at the record's sample
+      time (--time or --sample-time; without them the model's own, and a note says so); a
+      non-uniform time axis is refused for it. The inverse starts consistent
       with the model file's state. Targets that need an input outside the limits get the
       nearest limit, and a warning line says how many samples saturated and where the first is.
       The numerical inverses search a bounded range (Preisach: its input range; Bouc-Wen,

@@ -1,13 +1,16 @@
 // hyst plot: time series or hysteresis loops of a data file as PNG, optionally with a model's
 // simulated output beside the measurement.
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "../data_source.hpp"
+#include "../record_time.hpp"
 #include "commands.hpp"
 #include "hyst/plot/gnuplot.hpp"
 #include "hyst/registry/model_file.hpp"
@@ -27,6 +30,8 @@ struct PlotOptions {
   std::string input;
   std::string validation_start = "rest";
   std::string validation_align = "none";
+  TimeOptions time;
+  std::optional<std::size_t> table;
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -45,20 +50,35 @@ void run(const PlotOptions& options) {
   std::vector<io::NamedPath> inputs{{options.data, "--data"}};
   if (!options.model.empty()) inputs.push_back({options.model, "--model"});
   io::check_outputs(inputs, {{options.out, "--out"}});
-  const DataSource source(options.data);
+  const DataSource source(options.data, options.table);
+  if (options.y.empty()) throw Error("--y: give at least one column");
+  const auto samples = source.column(options.y.front()).size();
+  const auto time = record_time(source, options.time, samples);
 
   std::vector<double> x;
+  std::string x_label = options.x;
   if (!options.x.empty()) {
     x = source.column(options.x);
+    if (const auto unit = source.unit(options.x); !unit.empty())
+      x_label = fmt::format("{} [{}]", options.x, unit);
+  } else if (!loop && time) {
+    // A time series is drawn over the record's time, in seconds.
+    x = time->times;
+    if (x.empty()) {
+      x.resize(samples);
+      for (std::size_t k = 0; k < x.size(); ++k)
+        x[k] = static_cast<double>(k) * time->axis.sample_time;
+    }
+    x_label = "time [s]";
   }
   plot::Figure figure;
   figure.title = options.title.empty() ? options.data : options.title;
-  figure.x_label = options.x.empty() ? "sample" : options.x;
+  figure.x_label = x_label.empty() ? "sample" : x_label;
   figure.y_label = joined(options.y);
 
   for (const auto& name : options.y) {
     auto y = source.column(name);
-    if (x.empty() && options.x.empty()) {
+    if (x.empty()) {
       x.resize(y.size());
       for (std::size_t k = 0; k < x.size(); ++k)
         x[k] = static_cast<double>(k);
@@ -66,14 +86,15 @@ void run(const PlotOptions& options) {
     if (y.size() != x.size()) {
       throw Error(fmt::format(
           "{}: --y column '{}' has {} samples but --x {} has {}", options.data, name, y.size(),
-          options.x.empty() ? "(sample index)" : "'" + options.x + "'", x.size()));
+          options.x.empty() ? "(the time axis or the sample index)" : "'" + options.x + "'",
+          x.size()));
     }
     figure.series.push_back(
         {.label = options.model.empty() ? name : name + " (measured)", .x = x, .y = std::move(y)});
   }
 
   if (!options.model.empty()) {
-    auto model = load_model(options.model);
+    const auto model = model_for_record(load_model(options.model), time, "hyst plot");
     const auto input_name = !options.input.empty() ? options.input : loop ? options.x : "";
     if (input_name.empty()) {
       throw Error("--model with --kind series needs --input, the model's input column");
@@ -97,14 +118,14 @@ void run(const PlotOptions& options) {
     plot::Series simulated{.label = fmt::format("model ({}, {})", model->name(), options.model)};
     if (loop) {
       simulated.x = input;
-    } else if (options.x.empty()) {
+    } else if (x.empty()) {
       simulated.x.resize(output.size());
       for (std::size_t k = 0; k < output.size(); ++k)
         simulated.x[k] = static_cast<double>(k);
     } else {
       if (x.size() != output.size()) {
         throw Error(fmt::format("{}: --input column '{}' has {} samples but --x '{}' has {}",
-                                options.data, input_name, output.size(), options.x, x.size()));
+                                options.data, input_name, output.size(), figure.x_label, x.size()));
       }
       simulated.x = x;
     }
@@ -139,6 +160,9 @@ void add_plot_command(CLI::App& app) {
                       "Model file: add its output, simulated from the --input column");
   command->add_option("--input", options->input,
                       "Input column the model is simulated from (default for loops: --x)");
+  add_time_options(*command, options->time, "--data");
+  command->add_option("--table", options->table,
+                      "Measurement table of an aixACCT export with several (1, 2, ...)");
   command
       ->add_option("--validation-start", options->validation_start,
                    "With --model: where its prediction starts, as for 'hyst evaluate': rest, "
@@ -153,7 +177,9 @@ void add_plot_command(CLI::App& app) {
   hyst plot --data d.csv --x t --y v,y --out series.png
   hyst plot --data d.csv --x v --y y --kind loop --model m.json --out loop.png
       measured loop y(v) and the model's loop simulated from the column v
-  hyst plot --data d.csv --x t --y y --model m.json --input v --out fit.png)");
+  hyst plot --data d.csv --x t --y y --model m.json --input v --out fit.png
+  hyst plot --data d.csv --time t --y y --model creep.json --input v --out fit.png
+      the series over t in seconds; the creep model runs at the step of t)");
   command->callback([options] { run(*options); });
 }
 

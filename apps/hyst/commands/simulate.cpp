@@ -1,6 +1,8 @@
 // hyst simulate: runs a model file over an input column and writes input and output as CSV.
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,6 +10,7 @@
 
 #include "../data_source.hpp"
 #include "../domain_warning.hpp"
+#include "../record_time.hpp"
 #include "commands.hpp"
 #include "hyst/io/csv.hpp"
 #include "hyst/registry/fitted_domain_file.hpp"
@@ -22,6 +25,8 @@ struct SimulateOptions {
   std::string column;
   std::string out;
   std::string output_column = "y";
+  TimeOptions time;
+  std::optional<std::size_t> table;
   bool strict = false;
 };
 
@@ -29,7 +34,7 @@ void run(const SimulateOptions& options) {
   io::check_outputs({{options.model, "--model"}, {options.input, "--input"}},
                     {{options.out, "--out"}});
   auto model = load_model(options.model);
-  const DataSource source(options.input);
+  const DataSource source(options.input, options.table);
   const auto column = source.choose(options.column, "v", "--column");
   if (options.output_column == column) {
     throw Error(fmt::format(
@@ -38,12 +43,14 @@ void run(const SimulateOptions& options) {
   }
 
   auto input = source.column(column);
+  const auto time = record_time(source, options.time, input.size());
+  model = model_for_record(std::move(model), time, "hyst simulate", true);
   // Inputs beyond those the model was fitted on: checked now, said after the output is written.
   const auto domain = load_fitted_domain(options.model);
   const DomainCheck domain_check = domain ? check_inputs(*domain, input) : DomainCheck{};
   std::vector<double> output(input.size());
   try {
-    model->simulate(input, output);
+    simulate_record(model, time, input, output);
   } catch (const Error& error) {
     throw Error(fmt::format("{} column '{}' through the model of {}: {}", source.path().string(),
                             column, options.model, error.what()));
@@ -51,6 +58,8 @@ void run(const SimulateOptions& options) {
 
   io::Table table;
   table.source = options.out;
+  if (time && !time->times.empty() && time->column != column)
+    table.add_column(time->column, time->times);
   table.add_column(column, std::move(input));
   table.add_column(options.output_column, std::move(output));
   write_text_output(options.out, io::format_csv(table));
@@ -78,12 +87,20 @@ void add_simulate_command(CLI::App& app) {
       ->required();
   command->add_option("--output-column", options->output_column, "Name of the output column")
       ->capture_default_str();
+  add_time_options(*command, options->time, "--input");
+  command->add_option("--table", options->table,
+                      "Measurement table of an aixACCT export with several (1, 2, ...)");
   command->add_flag("--strict", options->strict,
                     "Exit with status 1 when inputs leave the range the model was fitted on "
                     "(the output is written)");
   command->footer(R"(Example:
   hyst simulate --model m.json --input in.csv --column v --out out.csv
-      out.csv gets the columns v (the input) and y (the model output). Inputs more than 5 %
+      out.csv gets the columns v (the input) and y (the model output). With --time t, also the
+      time column t, and a model whose output depends on time (creep, rate dependence, Bouc-Wen
+      oscillator) runs at the record's step: continuous-time models are re-discretised (the
+      lags exactly), stepped run by run through a non-uniform record; a NARX runs only at the
+      sample time it was fitted at. Without --time or --sample-time, such a model takes the
+      record as sampled at its own sample time and a note says so. Inputs more than 5 %
       of the fitted input range beyond it (the model file's info.domain, written by hyst fit)
       are extrapolation: a warning line says how many and where the first is (--strict: exit
       status 1).)");

@@ -49,6 +49,9 @@ struct CompareOptions {
   double validate_fraction = 0.25;
   //! Fit options by model name (the model's FitRequest::options); others get their defaults.
   std::map<std::string, nlohmann::json> fit_options;
+  //! The records' sample time [s]: the fit option sample_time of every model whose fitter has
+  //! one (with_sample_time()); none: each such model's default (time constants in samples).
+  std::optional<double> sample_time;
   //! Minimum total time of the simulation timing per model [s] (>= 0; 0: one run).
   double timing_seconds = 0.05;
   //! Best held-out NRMSE [%] above which no model is said to describe the record (> 0).

@@ -30,6 +30,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -56,6 +57,9 @@ struct CrossRecordOptions {
   std::vector<std::string> models;
   //! Fit options by model name (the model's FitRequest::options); others get their defaults.
   std::map<std::string, nlohmann::json> fit_options;
+  //! The records' sample time [s]: the fit option sample_time of every model whose fitter has
+  //! one (with_sample_time()); none: each such model's default (time constants in samples).
+  std::optional<double> sample_time;
   //! How each held-out record is predicted.
   ValidationRule validation;
   //! Best held-out NRMSE [%] on a record above which no model is said to describe it (> 0).

@@ -66,6 +66,9 @@ struct NarxFitOptions {
   std::size_t patience = 15;             //!< early stopping (>= 1)
   double early_stopping_fraction = 0.2;  //!< of the fit part, [0, 0.9]; 0: none
   double regularization = 1e-6;          //!< lambda >= 0 (normalised units)
+  //! Ts [s] of the record, stored in the model (its lags count samples of this step); 0: not
+  //! stated, the model then runs on any record sample by sample.
+  double sample_time = 0.0;
   //! Fraction of the record, at its end, held out for validation (data_split.hpp); [0, 1).
   double validate_fraction = 0.0;
 };

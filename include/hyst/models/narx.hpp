@@ -48,6 +48,8 @@ class Narx {
     double input_scale = 1.0;               //!< v_scale > 0 [input units]
     double output_offset = 0.0;             //!< y_off [output units]
     double output_scale = 1.0;              //!< y_scale > 0 [output units]
+    //! Ts [s] of the samples the lags count; 0 when fitted without a time axis (any is taken).
+    double sample_time = 0.0;
   };
   struct State {
     std::vector<double> past_inputs;   //!< v[k-1], v[k-2], ... (n_u values) [input units]

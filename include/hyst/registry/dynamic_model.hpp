@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -36,6 +37,16 @@ class DynamicInverse {
   virtual std::unique_ptr<DynamicInverse> clone() const = 0;
 };
 
+//! How a model's output depends on time. Rate-independent models ignore time by design: their
+//! output depends on the sequence of inputs alone, so a record's sample spacing does not change
+//! it. The others carry their sample time in seconds in the model file.
+enum class TimeDependence {
+  none,        //!< rate independent: any sample spacing gives the same output
+  continuous,  //!< continuous-time dynamics (lags, ODEs) discretised at the model's sample time,
+               //!< re-discretised for any other one (at_sample_time())
+  discrete,    //!< identified in samples (NARX): valid at its own sample time only
+};
+
 class DynamicModel {
  public:
   virtual ~DynamicModel() = default;
@@ -55,6 +66,17 @@ class DynamicModel {
   //! Runs the model over `input` from the current state (advanced); hyst::Error for mismatched
   //! lengths, non-finite input samples or outputs that overflow (not finite).
   virtual void simulate(std::span<const double> input, std::span<double> output) = 0;
+
+  //! How the output depends on time; TimeDependence::none unless the model has a sample time.
+  virtual TimeDependence time_dependence() const = 0;
+  //! The sample time [s] the model is discretised at; none for a rate-independent model and for
+  //! a discrete model fitted without a time axis.
+  virtual std::optional<double> sample_time() const = 0;
+  //! The same model, in the same state, at the sample time `seconds` > 0: a rate-independent
+  //! model as it is; a continuous-time one re-discretised (exactly where an exact form exists,
+  //! e.g. the lags' decays exp(-Ts / tau), else by its own integrator at the new step); a
+  //! discrete one only at its own sample time (within 0.1 %), else hyst::Error naming both.
+  virtual std::unique_ptr<DynamicModel> at_sample_time(double seconds) const = 0;
 
   //! Number of free parameters (for comparing models).
   virtual std::size_t parameter_count() const = 0;

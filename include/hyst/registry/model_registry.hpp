@@ -129,6 +129,13 @@ void require_fit_record_count(std::size_t count);
 //! no fitter.
 FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request);
 
+//! True when the entry's fitter takes the option sample_time (its model depends on time).
+bool fits_sample_time(const ModelEntry& entry);
+//! `options` (a JSON object) with "sample_time" = `seconds` when the entry's fitter takes that
+//! option and `options` does not already set it; unchanged otherwise or without `seconds`.
+nlohmann::json with_sample_time(const ModelEntry& entry, nlohmann::json options,
+                                std::optional<double> seconds);
+
 class ModelRegistry {
  public:
   //! The registry with every built-in model.

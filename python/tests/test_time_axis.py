@@ -1,0 +1,98 @@
+"""A record's time axis from Python: models with time in them re-discretised at the record's
+step (Model.simulate(sample_time=/time=), hyst.evaluate, hyst.fit(time=)), rate-independent
+models unchanged, a NARX held to its own sample time."""
+
+import numpy as np
+import pytest
+
+import hyst
+
+CREEP = {"thresholds": [0.0, 0.5], "weights": [1.0, 0.5], "time_constants": [0.05, 0.3],
+         "creep_weights": [0.2, 0.1, 0.1, 0.05], "sample_time": 0.01}
+
+
+def staircase(samples_per_level: int, levels: int = 12) -> np.ndarray:
+    return np.repeat(np.array([(k % 4) - 1.5 for k in range(levels)]), samples_per_level)
+
+
+def test_time_dependence_and_sample_time_of_models():
+    creep = hyst.Model("pi_creep", CREEP)
+    assert creep.time_dependence == "continuous" and creep.sample_time == 0.01
+    pi = hyst.Model("pi", {"thresholds": [0.0, 0.5], "weights": [1.0, 0.5]})
+    assert pi.time_dependence == "none" and pi.sample_time is None
+    slower = creep.at_sample_time(0.1)
+    assert slower.sample_time == 0.1 and slower.params["time_constants"] == [0.05, 0.3]
+    assert creep.sample_time == 0.01  # unchanged
+
+
+def test_the_same_physical_prediction_at_a_ten_times_coarser_step():
+    creep = hyst.Model("pi_creep", CREEP)
+    fine = creep.simulate(staircase(50))                       # 10 ms, the model's own
+    coarse = creep.simulate(staircase(5), sample_time=0.1)     # 100 ms
+    np.testing.assert_allclose(coarse, fine[9::10], rtol=0, atol=1e-12)
+    times = 0.1 * np.arange(60)
+    np.testing.assert_array_equal(creep.simulate(staircase(5), time=times), coarse)
+    # Without a time axis the coarse samples are taken as 10 ms apart: another output.
+    assert np.max(np.abs(creep.simulate(staircase(5)) - fine[9::10])) > 1e-2
+
+
+def test_a_non_uniform_time_axis_is_stepped_run_by_run():
+    creep = hyst.Model("pi_creep", CREEP)
+    v = staircase(5, 4)
+    times = np.concatenate([0.01 * np.arange(10), 0.09 + 0.1 * np.arange(1, 11)])
+    stepped = creep.simulate(v, time=times)
+    first, state = creep.simulate(v[:10], sample_time=0.01, return_state=True)
+    second = creep.at_sample_time(0.1).simulate(v[10:], state=state)
+    np.testing.assert_array_equal(stepped, np.concatenate([first, second]))
+    with pytest.raises(hyst.Error, match="not uniform"):
+        hyst.evaluate(creep, v, stepped, time=times)
+
+
+def test_a_rate_independent_model_ignores_time():
+    pi = hyst.Model("pi", {"thresholds": [0.0, 0.5], "weights": [1.0, 0.5]})
+    v = staircase(3)
+    np.testing.assert_array_equal(pi.simulate(v, sample_time=7.0), pi.simulate(v))
+
+
+def test_evaluate_runs_at_the_records_step_and_says_so():
+    creep = hyst.Model("pi_creep", CREEP)
+    v = staircase(5)
+    y = creep.simulate(v, sample_time=0.1)
+    result = hyst.evaluate(creep, v, y, sample_time=0.1)
+    assert result["rmse"] < 1e-12
+    assert result["sample_time"] == 0.1 and result["time_dependence"] == "continuous"
+    assert hyst.evaluate(creep, v, y)["rmse"] > 1e-3
+
+
+def test_fit_takes_the_sample_time_from_a_time_column():
+    creep = hyst.Model("pi_creep", CREEP)
+    v = staircase(50)
+    times = 0.01 * np.arange(v.size)
+    y = creep.simulate(v)
+    fitted = hyst.fit("pi_creep", v, y, time=times, time_constants=[0.05, 0.3])
+    assert fitted.model.sample_time == pytest.approx(0.01)
+    assert fitted.report.domain.sample_time == pytest.approx(0.01)
+    with pytest.raises(hyst.Error, match="both give the sample time"):
+        hyst.fit("pi_creep", v, y, time=times, sample_time=0.01)
+    with pytest.raises(hyst.Error, match="has no sample time"):
+        hyst.fit("pi", v, y, time=times)
+    with pytest.raises(hyst.Error, match="not uniform"):
+        hyst.fit("pi_creep", v, y, time=times ** 2)
+
+
+def test_data_sample_time_of_a_time_column():
+    assert hyst.data.sample_time([0.0, 0.25, 0.5, 0.75]) == pytest.approx(0.25)
+    with pytest.raises(hyst.Error, match="not uniform"):
+        hyst.data.sample_time([0.0, 0.1, 0.3])
+
+
+def test_a_narx_runs_at_its_own_sample_time_only():
+    params = dict(hyst.model_entry("narx").example_params, sample_time=0.01)
+    narx = hyst.Model("narx", params)
+    assert narx.time_dependence == "discrete" and narx.sample_time == 0.01
+    v = staircase(5)
+    narx.simulate(v, sample_time=0.01)
+    with pytest.raises(hyst.Error, match=r"identified at the sample time 0.01 s .* 0.1 s"):
+        narx.simulate(v, sample_time=0.1)
+    with pytest.raises(hyst.Error, match="sample_time or time, not both"):
+        narx.simulate(v, sample_time=0.01, time=0.01 * np.arange(v.size))
