@@ -109,10 +109,9 @@ void bind_micromag_forc(py::module_& io_module) {
       .def_readonly("title", &io::MicromagForcFile::title, "the second line")
       .def_property_readonly(
           "layout",
-          [](const io::MicromagForcFile& f) {
-            return f.layout == io::MicromagForcLayout::series_0015 ? "series_0015" : "series_0016";
-          },
-          "'series_0015' (key = value header, AGM) or 'series_0016' (sectioned header, VSM)")
+          [](const io::MicromagForcFile& f) { return std::string(hyst::to_string(f.layout)); },
+          "'series_0015' (key = value header, AGM), 'series_0016' (sectioned header, VSM) or "
+          "'no_header' (the format and title lines only)")
       .def_property_readonly(
           "header", [](const io::MicromagForcFile& f) { return header_dict(f.header); },
           "{key: text} of the header")

@@ -124,6 +124,12 @@ void bind_registry(py::module_& module) {
       .def_readonly("description", &ModelEntry::description)
       .def_readonly("parameters", &ModelEntry::parameters)
       .def_readonly("fit_options", &ModelEntry::fit_options)
+      .def_readonly("input_unit", &ModelEntry::input_unit,
+                    "unit the parameters assume for the input ('A/m' for jiles_atherton); '' "
+                    "for any")
+      .def_readonly("output_unit", &ModelEntry::output_unit,
+                    "unit the parameters assume for the output ('T' for jiles_atherton); '' for "
+                    "any")
       .def_property_readonly("can_fit", &ModelEntry::can_fit, "True when hyst.fit() can fit it.")
       .def_property_readonly("can_fit_records", &ModelEntry::can_fit_records,
                              "True when hyst.fit_records() can fit several records together.")

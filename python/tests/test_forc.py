@@ -55,6 +55,33 @@ def test_reads_the_series_0016_vsm_file():
         np.testing.assert_allclose(normalized, curve.moment / mass, rtol=1e-6)
 
 
+def test_number_of_segments_without_a_segment_table_and_the_two_line_header():
+    # The header of a measured VSM FORC file that was refused: the script's segment count, no
+    # segment table. The same text as the C++ reader reads it; counts by hand from the text.
+    text = ("MicroMag 2900/3900 Data File (Series 0016.002)\nFirst-order reversal curves\n\n"
+            "SCRIPT\nUnits of measure                Cgs\n"
+            "Number of segments              100\nNumber of data                  5\n\n"
+            "    Field          Moment\n"
+            "+3.0E+03,+1.0E-02\n\n+1.0E+03,+5.0E-03\n\n+3.0E+03,+9.0E-03\n\n"
+            "-1.0E+03,-5.0E-03\n+0.0E+00,+1.0E-03\nMicroMag 2900/3900 Data File ends\n")
+    forc = io.parse_micromag_forc(text, "forc_vsm.001")
+    assert forc.layout == "series_0016" and forc.header_number("Number of segments") == 100
+    assert forc.units == ["Oe", "emu"] and [len(c) for c in forc.curves] == [1, 2]
+    assert list(forc.curves[1].field) == [-1000.0, 0.0] and forc.curves[1].first_line == 16
+    old = io.parse_micromag_forc("MicroMag 2900/3900 Data File\nFirst-order reversal curves\n"
+                                 "+2.0E-01,+1.0E-06\n\n+1.0E-01,+5.0E-07\n"
+                                 "MicroMag 2900/3900 Data File ends\n", "old.frc")
+    assert old.layout == "no_header" and old.columns == ["Field", "Moment"]
+    assert old.units == ["", ""] and len(old.curves) == 1
+
+
+def test_magnetic_models_state_their_units():
+    ja = hyst.model_entry("jiles_atherton")
+    assert (ja.input_unit, ja.output_unit) == ("A/m", "T")
+    pi = hyst.model_entry("pi")
+    assert (pi.input_unit, pi.output_unit) == ("", "")
+
+
 def test_reader_errors_name_file_and_line(tmp_path):
     bad = VSM_FILE.read_bytes().replace(b"+2.007000E+00", b"+2.0x7000E+00")
     path = tmp_path / "bad.forc"

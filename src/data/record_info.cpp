@@ -72,7 +72,9 @@ ReadTable read_loop_table(const io::MicromagLoopFile& file) {
 
 ForcInfo forc_info(const io::MicromagForcFile& file) {
   ForcInfo info;
-  info.layout = file.layout == io::MicromagForcLayout::series_0015 ? "Series 0015" : "Series 0016";
+  info.layout = file.layout == io::MicromagForcLayout::series_0015   ? "Series 0015"
+                : file.layout == io::MicromagForcLayout::series_0016 ? "Series 0016"
+                                                                     : "no header";
   info.curves = file.curves.size();
   info.points = file.points();
   info.calibration_points = file.calibration_points();

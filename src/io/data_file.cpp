@@ -57,7 +57,9 @@ DataFile::DataFile(std::filesystem::path path, std::optional<std::size_t> table)
           path_.string(), path_.string(), path_.string()));
     } else if (looks_like_micromag_loop(text)) {
       micromag_loop_ = true;
-      table_ = parse_micromag_loop(text, path_.string()).to_table();
+      const auto loop = parse_micromag_loop(text, path_.string());
+      table_ = loop.to_table();
+      units_ = loop.units;
     } else {
       table_ = parse_csv(text, path_.string());
     }
@@ -76,6 +78,10 @@ bool DataFile::has_column(std::string_view name) const {
 }
 
 std::string DataFile::unit(std::string_view name) const {
+  if (!units_.empty()) {
+    const auto found = std::find(names_.begin(), names_.end(), name);
+    return found == names_.end() ? std::string() : units_[std::size_t(found - names_.begin())];
+  }
   if (!aixacct_) return {};
   const auto* column = aixacct_->measurements[aixacct_table_].find(name);
   return column ? column->unit : std::string();

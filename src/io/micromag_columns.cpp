@@ -51,6 +51,12 @@ std::vector<std::string> column_names(const std::vector<std::string_view>& title
   if (name_line == lines.rend()) {
     for (std::size_t j = 0; j < count; ++j)
       names[j] = fmt::format("Column {}", j + 1);
+    // Without any title line (the older exports: data right after the format and title lines)
+    // the first two columns are the field and the moment, as in every MicroMag export.
+    if (titles.empty() && count >= 2) {
+      names[0] = "Field";
+      names[1] = "Moment";
+    }
     return names;
   }
   std::vector<std::string> qualifiers(count);

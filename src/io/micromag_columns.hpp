@@ -14,7 +14,8 @@
 namespace hyst::io::detail {
 
 //! Column names: "Field", "Raw Moment", "Normalized Moment"; "Column 3" for every column when no
-//! title line has one word per column; a name used twice gets its column number.
+//! title line has one word per column ("Field", "Moment", "Column 3", ... when there is no title
+//! line at all); a name used twice gets its column number.
 std::vector<std::string> column_names(const std::vector<std::string_view>& titles,
                                       std::size_t count);
 

@@ -30,17 +30,6 @@ struct Block {
   std::size_t size() const { return lines.size(); }
 };
 
-//! Series 0015 ends its header with "NData = N"; Series 0016 writes "Number of data   N".
-bool has_ndata_line(detail::LineReader lines) {
-  std::string_view line;
-  while (lines.next(line)) {
-    const auto content = trim(line);
-    if (detail::is_comma_row(content)) return false;
-    if (content.starts_with("NData") && trim(content.substr(5)).starts_with('=')) return true;
-  }
-  return false;
-}
-
 class ForcParser {
  public:
   // A final line end ends the last line; it does not start an empty one (messages name the last
@@ -65,16 +54,17 @@ class ForcParser {
           "{}: a MicroMag hysteresis loop file, not a FORC file (read it with read_micromag_loop)",
           location(source_, 2)));
     }
-    std::string_view first_row;
-    if (has_ndata_line(lines_)) {
-      file_.layout = MicromagForcLayout::series_0015;
-      read_equals_header();
+    // One header reader for every layout: "key = value", "key : value" and "key   value"
+    // entries in any order, then an optional segment table, then the data.
+    detail::MicromagSectionReader sections(lines_, source_);
+    static_cast<void>(sections.read_head(file_.header));
+    const std::string_view first_row = sections.first_row();
+    file_.layout = file_.header_text("NData") ? MicromagForcLayout::series_0015
+                   : file_.header.empty()     ? MicromagForcLayout::no_header
+                                              : MicromagForcLayout::series_0016;
+    if (file_.layout == MicromagForcLayout::series_0015) {
       file_.columns = {"Field", "Moment"};
     } else {
-      file_.layout = MicromagForcLayout::series_0016;
-      detail::MicromagSectionReader sections(lines_, source_);
-      static_cast<void>(sections.read_head(file_.header));
-      first_row = sections.first_row();
       const auto count = detail::split_fields(first_row, ',').size();
       if (count < 2) {
         throw Error(fmt::format("{}: a data row needs at least field and moment, got '{}'",
@@ -92,21 +82,6 @@ class ForcParser {
   }
 
  private:
-  // Series 0015: "key = value" and "key : value" up to and including the NData line.
-  void read_equals_header() {
-    std::string_view line;
-    while (lines_.next(line)) {
-      const auto content = trim(line);
-      const auto split = content.find_first_of("=:");
-      if (split == std::string_view::npos) continue;
-      const auto key = trim(content.substr(0, split));
-      const auto value = trim(content.substr(split + 1));
-      if (key.empty()) continue;
-      file_.header.emplace_back(utf8_from_latin1(key), utf8_from_latin1(value));
-      if (key == "NData") return;
-    }
-  }
-
   // Field and moment units from "Units of measure" where no units line gave them.
   void units_from_header() {
     const auto system = file_.header_text("Units of measure").value_or("");

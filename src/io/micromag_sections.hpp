@@ -55,7 +55,7 @@ class MicromagSectionReader {
   [[noreturn]] void throw_truncated() const;
 
  private:
-  void read_segment_table(double declared, std::size_t& rows);
+  void read_segment_table(std::optional<double> declared, std::size_t& rows);
 
   LineReader& lines_;
   std::string_view source_;

@@ -140,6 +140,8 @@ ModelEntry jiles_atherton_entry() {
       "Jiles-Atherton: B(H) of ferromagnets, original or Venkataraman variant; Ceres fit");
   entry.fit_options = jiles_atherton_fit_option_table().schema();
   entry.fit = &fit_jiles_atherton_request;
+  entry.input_unit = std::string("A/m");  // H
+  entry.output_unit = std::string("T");   // B
   entry.example_params = {{"ms", 1e5}, {"a", 0.5},      {"k", 0.4},
                           {"c", 0.2},  {"alpha", 1e-6}, {"variant", "original"}};
   return entry;

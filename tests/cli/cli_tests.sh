@@ -1348,6 +1348,64 @@ forc_counts() {
     END { print curves, points, held, held_points }'
 }
 
+# micromag_loop FILE FIELD_UNIT MOMENT_UNIT: a small Series 0016 loop file, its units line
+# "(FIELD_UNIT)  (MOMENT_UNIT)", 5 points.
+micromag_loop() {
+  printf '%s\r\n' "MicroMag 2900/3900 Data File (Series 0016.002)" \
+    "Direct moment vs. field; Hysteresis loop" "" "INSTRUMENT" \
+    "Units of measure                Hybrid SI" "Number of data                  5" "" \
+    "    Field         Moment" "     ($2)           ($3)" \
+    "+5.0E-01,+2.0E-06" "+0.0E+00,+1.0E-06" "-5.0E-01,-2.0E-06" "+0.0E+00,-1.0E-06" \
+    "+5.0E-01,+2.0E-06" "" "MicroMag 2900/3900 Data File ends" >"$1"
+}
+
+# A magnetic model told the units of the data: the file's units against the model's (H in A/m,
+# B in T), the conversion in the message, --units-intended to fit the values as they are.
+case_fit_units() {
+  micromag_loop t.hys T Am2
+  expect_error 1 "--input 'Field' of t.hys is in T, but model 'jiles_atherton' takes its input" \
+    "in A/m" "multiply by 1 / mu_0 = 795774.7 A/m per T" "--units-intended" -- \
+    "$HYST" fit jiles_atherton --data t.hys --input Field --output Moment --out ja.json
+  micromag_loop h.hys A/m Am2
+  expect_error 1 "--output 'Moment' of h.hys is in Am2, but model 'jiles_atherton' takes its" \
+    "output in T" "B = mu_0 (H + m / V)" -- \
+    "$HYST" fit jiles_atherton --data h.hys --input Field --output Moment --out ja.json
+  # Units that agree, or --units-intended: the fit goes on to its next check (a fraction out
+  # of range, refused after the units), so the unit check passed.
+  micromag_loop b.hys A/m T
+  expect_error 1 "--validate-fraction 1.5 must be > 0 and < 1" -- \
+    "$HYST" fit jiles_atherton --data b.hys --input Field --output Moment --out ja.json \
+    --validate-fraction 1.5
+  expect_error 1 "--validate-fraction 1.5 must be > 0 and < 1" -- \
+    "$HYST" fit jiles_atherton --data t.hys --input Field --output Moment --out ja.json \
+    --validate-fraction 1.5 --units-intended
+  # A model in input and output units takes any.
+  expect_error 1 "--validate-fraction 1.5 must be > 0 and < 1" -- \
+    "$HYST" fit pi --data t.hys --input Field --output Moment --out pi.json --validate-fraction 1.5
+  expect_ok "$HYST" models jiles_atherton
+  expect_stdout "units: input in A/m, output in T"
+  # The units the fit checks are those 'hyst data info' shows.
+  expect_ok "$HYST" data info t.hys
+  grep -qE '^  Field +T +5 ' "$WORK/stdout" && grep -qE '^  Moment +Am2 +5 ' "$WORK/stdout" ||
+    fail "data info units: $(cat "$WORK/stdout")"
+}
+
+# A VSM FORC file whose header gives the script's 'Number of segments 100' and no segment
+# table (a measured file was refused for it: "the segment table has 1 rows") reads.
+case_data_info_forc_segments() {
+  printf '%s\r\n' "MicroMag 2900/3900 Data File (Series 0016.002)" "First-order reversal curves" \
+    "" "INSTRUMENT" "Configuration                   VSM" \
+    "Units of measure                Hybrid SI" "" "SCRIPT" \
+    "HCal                           +300.0000E-03" "NForc                           2" \
+    "Number of segments              100" "Number of data                  5" "" \
+    "    Field          Moment" \
+    "+3.0E-01,+1.0E-05" "" "+1.0E-01,+5.0E-06" "" "+3.0E-01,+9.0E-06" "" \
+    "-1.0E-01,-5.0E-06" "+0.0E+00,+1.0E-06" "" "MicroMag 2900/3900 Data File ends" >forc_vsm.001
+  expect_ok "$HYST" data info forc_vsm.001
+  expect_stdout "MicroMag FORC file, 2 curves (Series 0016.002)" "curves              2 (1 to 2 points each)" \
+    "points              3 (and 2 calibration"
+}
+
 case_data_info_forc() {
   agm_forc_file
   # PROVENANCE.md: 120 FORCs, the first a single point, the last 85 points, 8514 data rows of

@@ -333,6 +333,126 @@ TEST(MicromagForc, MalformedSeries0016FilesNameFileAndLine) {
                     "l.forc:2: a MicroMag hysteresis loop file, not a FORC file");
 }
 
+// The case a measured VSM FORC file was refused for ("forc_vsm.001:89: the header says 'Number of
+// segments 100' but the segment table has 1 rows"): the script's segment count in the header, no
+// segment table. It reads; the count is not checked against anything.
+TEST(MicromagForc, NumberOfSegmentsWithoutASegmentTableReads) {
+  std::string text = vsm_file(kVsmData);
+  text.insert(text.find("Number of data"), "Number of segments              100\r\n");
+  const auto file = parse_micromag_forc(text, "forc_vsm.001");
+  EXPECT_EQ(file.layout, MicromagForcLayout::series_0016);
+  EXPECT_EQ(file.header_number("Number of segments"), 100.0);
+  ASSERT_EQ(file.curves.size(), 2U);
+  EXPECT_EQ(file.curves[0].field, (std::vector<double>{0.1}));
+  EXPECT_EQ(file.curves[1].field, (std::vector<double>{-0.1, 0.0}));
+  EXPECT_EQ(file.curves[1].calibration_moment, 9e-6);
+  // The data moved one line down: the last curve starts on line 24.
+  EXPECT_EQ(file.curves[1].first_line, 24U);
+  // Without the line (the workaround that made the file read) the curves are the same.
+  const auto without = parse_micromag_forc(vsm_file(kVsmData), "v.forc");
+  EXPECT_EQ(without.curves[1].moment, file.curves[1].moment);
+  EXPECT_FALSE(without.header_text("Number of segments"));
+}
+
+// A FORC file may carry a segment table like a loop file (its titles "Segment ... Number"): it
+// is skipped, and checked against 'Number of segments' only then.
+TEST(MicromagForc, ASegmentTableIsSkippedAndCounted) {
+  const auto with_table = [](std::string_view segments) {
+    std::string text = vsm_file(kVsmData);
+    text.replace(text.find("\r\n                                      Normalized"), 2,
+                 fmt::format("Number of segments              {}\r\n"
+                             "\r\n"
+                             "Segment   Averaging      Initial\r\n"
+                             " Number      Time         Field \r\n"
+                             "0000001,+100.0000E-03,+300.0000E-03\r\n"
+                             "0000002,+100.0000E-03,+100.0000E-03\r\n"
+                             "\r\n",
+                             segments));
+    return text;
+  };
+  const auto file = parse_micromag_forc(with_table("2"), "t.forc");
+  EXPECT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment", "Normalized Moment"}));
+  ASSERT_EQ(file.curves.size(), 2U);
+  EXPECT_EQ(file.curves[1].field, (std::vector<double>{-0.1, 0.0}));
+  // Lines 13-19: the count, a blank line, 2 title and 2 table rows, a blank line; 20-22 the
+  // column titles, 23 the calibration point, 24 blank, 25 the first curve.
+  EXPECT_EQ(file.curves[0].first_line, 25U);
+  EXPECT_HYST_ERROR(parse_micromag_forc(with_table("3"), "t.forc"),
+                    "t.forc:19: the header says 'Number of segments 3' but the segment table "
+                    "has 2 rows");
+}
+
+// Series 0015 with the header keys in another order (NData first, 'Units of measure' last) and
+// no blank line before the data: the NData line is an entry, not a column title.
+TEST(MicromagForc, Series0015KeysInAnyOrder) {
+  const auto text = [](std::string_view ndata, std::string_view units) {
+    return fmt::format(
+        "MicroMag 2900/3900 Data File (Series 0015)\n"
+        "First-order reversal curves\n"
+        "NData          = {}\n"
+        "HCal           = +2.000000E-01\n"
+        "Configuration   :  AGM\n"
+        "Units of measure:  {}\n"
+        "+2.0E+03,+1.0E-03\n"
+        "\n"
+        "+1.0E+03,+5.0E-04\n"
+        "\n"
+        "+2.0E+03,+9.0E-04\n"
+        "\n"
+        "-1.0E+03,-5.0E-04\n"
+        "+0.0E+00,+1.0E-04\n"
+        "MicroMag 2900/3900 Data File ends\n",
+        ndata, units);
+  };
+  const auto file = parse_micromag_forc(text("5", "Cgs"), "r.forc");
+  EXPECT_EQ(file.layout, MicromagForcLayout::series_0015);
+  EXPECT_EQ(file.header_number("NData"), 5.0);
+  EXPECT_EQ(file.header_number("HCal"), 0.2);
+  EXPECT_EQ(file.header_text("Configuration"), "AGM");
+  // cgs: field in Oe, moment in emu.
+  EXPECT_EQ(file.units, (std::vector<std::string>{"Oe", "emu"}));
+  ASSERT_EQ(file.curves.size(), 2U);
+  EXPECT_EQ(file.curves[0].calibration_field, 2000.0);
+  EXPECT_EQ(file.curves[1].field, (std::vector<double>{-1000.0, 0.0}));
+  EXPECT_EQ(file.curves[1].first_line, 13U);
+  EXPECT_EQ(parse_micromag_forc(text("5", "Hybrid SI"), "r.forc").units,
+            (std::vector<std::string>{"T", "A m\u00b2"}));
+  // NData is still checked where it stands.
+  EXPECT_HYST_ERROR(parse_micromag_forc(text("6", "Cgs"), "r.forc"),
+                    "r.forc:15: the header says NData = 6 but the file has 5 data points");
+}
+
+// The older exports: the format line without a series, the title, then the data (no header).
+// A title naming FORCs after the measurement kind reads too.
+TEST(MicromagForc, TwoLineHeaderReads) {
+  const std::string text =
+      "MicroMag 2900/3900 Data File\r\n"
+      "Direct moment vs. field; First-order reversal curves\r\n"
+      "+2.0E-01,+1.0E-06\r\n"
+      "\r\n"
+      "+1.0E-01,+5.0E-07\r\n"
+      "+1.5E-01,+6.0E-07\r\n"
+      "MicroMag 2900/3900 Data File ends\r\n";
+  EXPECT_TRUE(looks_like_micromag_forc(text));
+  const auto file = parse_micromag_forc(text, "old.frc");
+  EXPECT_EQ(file.layout, MicromagForcLayout::no_header);
+  EXPECT_EQ(to_string(file.layout), "no_header");
+  EXPECT_TRUE(file.header.empty());
+  EXPECT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment"}));
+  // No 'Units of measure': the units are unknown.
+  EXPECT_EQ(file.units, (std::vector<std::string>{"", ""}));
+  ASSERT_EQ(file.curves.size(), 1U);
+  EXPECT_EQ(file.curves[0].calibration_moment, 1e-6);
+  EXPECT_EQ(file.curves[0].field, (std::vector<double>{0.1, 0.15}));
+  EXPECT_EQ(file.curves[0].first_line, 5U);
+  // A row of one number is named by file and line.
+  std::string bad = text;
+  bad.replace(bad.find("+1.5E-01,+6.0E-07"), 17, "+1.5E-01,+6.0E-07,+1.0");
+  EXPECT_HYST_ERROR(parse_micromag_forc(bad, "old.frc"),
+                    "old.frc:6: '+1.5E-01,+6.0E-07,+1.0' has 3 comma-separated fields; the data "
+                    "rows have 2 (Field, Moment)");
+}
+
 TEST(MicromagForc, CurveCountIsLimited) {
   // One calibration point and one single-point curve per FORC, a few bytes each.
   std::string data;

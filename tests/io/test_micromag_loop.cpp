@@ -195,6 +195,64 @@ TEST(MicromagLoop, MalformedFilesNameFileLineAndColumn) {
   EXPECT_HYST_ERROR(read_micromag_loop(kFolder / "no_such_file.hys"), "no_such_file.hys");
 }
 
+// 'Number of segments' is checked against a segment table only where the file has one; a table
+// is known by its titles ("Segment ...") or its numbered rows ("0000001,..."), not by the count.
+TEST(MicromagLoop, SegmentTableWithOrWithoutItsCount) {
+  // The count without a table: the data follow the column titles.
+  std::string no_table = small_loop_file(kFourRows);
+  no_table.erase(
+      no_table.find("Segment   Averaging"),
+      no_table.find("                            Adjusted") - no_table.find("Segment   Averaging"));
+  const auto counted = parse_micromag_loop(no_table, "n.hys");
+  EXPECT_EQ(counted.segments, 0U);
+  EXPECT_EQ(counted.header_number("Number of segments"), 2.0);
+  EXPECT_EQ(counted.columns, (std::vector<std::string>{"Field", "Moment", "Adjusted Moment"}));
+  EXPECT_EQ(counted.first_data_line, 16U);
+  EXPECT_EQ(counted.field(), (std::vector<double>{0.5, -0.5, -0.5, 0.5}));
+  // A table without the count: its rows are counted, not checked.
+  std::string uncounted = small_loop_file(kFourRows);
+  uncounted.erase(uncounted.find("Number of segments"),
+                  uncounted.find("Number of data") - uncounted.find("Number of segments"));
+  const auto table = parse_micromag_loop(uncounted, "t.hys");
+  EXPECT_EQ(table.segments, 2U);
+  EXPECT_EQ(table.first_data_line, 20U);
+  // A table of numbered rows without its titles is still a table.
+  std::string untitled = small_loop_file(kFourRows);
+  untitled.erase(untitled.find("Segment   Averaging"),
+                 untitled.find("0000001,") - untitled.find("Segment   Averaging"));
+  EXPECT_EQ(parse_micromag_loop(untitled, "u.hys").segments, 2U);
+  const std::string_view two = "Number of segments              2";
+  untitled.replace(untitled.find(two), two.size(), "Number of segments              3");
+  EXPECT_HYST_ERROR(parse_micromag_loop(untitled, "u.hys"),
+                    "u.hys:15: the header says 'Number of segments 3' but the segment table has "
+                    "2 rows");
+}
+
+// The older exports: the format and title lines, then the data; the first two columns are the
+// field and the moment, units unknown. A cgs header gives Oe and emu.
+TEST(MicromagLoop, TwoLineHeaderAndCgsUnits) {
+  const std::string old =
+      "MicroMag 2900/3900 Data File\n"
+      "Direct moment vs. field; Hysteresis loop\n"
+      "+5.000E+03,+2.0E-03\n"
+      "-5.000E+03,-2.0E-03\n"
+      "+5.000E+03,+2.0E-03\n"
+      "MicroMag 2900/3900 Data File ends\n";
+  EXPECT_TRUE(looks_like_micromag_loop(old));
+  const auto file = parse_micromag_loop(old, "old.hys");
+  EXPECT_EQ(file.columns, (std::vector<std::string>{"Field", "Moment"}));
+  EXPECT_EQ(file.units, (std::vector<std::string>{"", ""}));
+  EXPECT_EQ(file.first_data_line, 3U);
+  EXPECT_EQ(file.field(), (std::vector<double>{5000.0, -5000.0, 5000.0}));
+  EXPECT_TRUE(file.header.empty());
+  std::string cgs = small_loop_file(kFourRows);
+  cgs.replace(cgs.find("Hybrid SI"), 9, "cgs");
+  const std::string_view units_line = "     (T)          (Am2)       (Am2)   \r\n";
+  cgs.erase(cgs.find(units_line), units_line.size());
+  EXPECT_EQ(parse_micromag_loop(cgs, "c.hys").units,
+            (std::vector<std::string>{"Oe", "emu", "emu"}));
+}
+
 TEST(MicromagLoop, LooksLikeChecksTheFirstTwoLines) {
   EXPECT_TRUE(looks_like_micromag_loop(small_loop_file(kFourRows)));
   EXPECT_FALSE(

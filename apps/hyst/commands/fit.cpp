@@ -57,8 +57,74 @@ struct FitOptions {
   std::string time;          //!< --time COLUMN: the record's sample time from its time column
   double sample_time = 0.0;  //!< --sample-time SECONDS (0: not given)
   std::string tables;        //!< --tables 6,1: several tables of an aixACCT export fitted together
+  bool units_intended = false;  //!< --units-intended: fit despite units unlike the model's
   ProgressFlags progress;
 };
+
+//! A unit as files write it, for comparison: blanks and '^' left out, "²" as 2 ("A m²" = "Am2").
+std::string unit_key(std::string_view unit) {
+  std::string key;
+  for (std::size_t i = 0; i < unit.size(); ++i) {
+    if (unit.substr(i).starts_with("\u00b2")) {
+      key += '2';
+      ++i;  // the two bytes of "²" in UTF-8
+    } else if (unit[i] != ' ' && unit[i] != '^') {
+      key += unit[i];
+    }
+  }
+  return key;
+}
+
+//! How to bring a column in `from` to the model's `to`, for the message; "" without a rule.
+std::string unit_conversion(const std::string& from, const std::string& to) {
+  const auto f = unit_key(from);
+  const auto t = unit_key(to);
+  if (t == "A/m") {
+    if (f == "T") return "H = B / mu_0: multiply by 1 / mu_0 = 795774.7 A/m per T";
+    if (f == "mT") return "H = B / mu_0: multiply by 795.7747 A/m per mT";
+    if (f == "Oe") return "multiply by 1000 / (4 pi) = 79.57747 A/m per Oe";
+    if (f == "kA/m") return "multiply by 1000";
+  }
+  if (t == "T") {
+    if (f == "Am2" || f == "emu" || f == "Am2/kg" || f == "emu/g") {
+      return "a magnetic moment is no flux density: B = mu_0 (H + m / V) needs the sample's "
+             "volume V [m^3] (1 emu = 1e-3 A m^2)";
+    }
+    if (f == "A/m") return "B = mu_0 (H + M) for a magnetisation M [A/m]";
+    if (f == "mT") return "multiply by 1e-3";
+    if (f == "G") return "multiply by 1e-4 T per G";
+  }
+  return "";
+}
+
+//! The unit the file states for an input or output column, checked against the model's:
+//! hyst::Error naming the column, both units and the conversion, unless --units-intended. The
+//! stated unit goes into `units` (the model file's info.data.units).
+void check_column_unit(const FitOptions& options, const ModelEntry& entry, const DataSource& data,
+                       std::string_view role, const std::string& column, const std::string& wanted,
+                       nlohmann::json& units) {
+  const auto stated = data.unit(column);
+  if (stated.empty()) return;
+  units[std::string(role)] = stated;
+  if (wanted.empty() || unit_key(stated) == unit_key(wanted) || options.units_intended) return;
+  const auto how = unit_conversion(stated, wanted);
+  throw Error(fmt::format(
+      "--{} '{}' of {} is in {}, but model '{}' takes its {} in {}: convert the column{}, or "
+      "pass --units-intended to fit the values as they are",
+      role, column, data.path().string(), stated, entry.name, role, wanted,
+      how.empty() ? "" : fmt::format(" ({})", how)));
+}
+
+//! Every column's unit checked (check_column_unit); the units the file states in `data_info`.
+void check_units(const FitOptions& options, const ModelEntry& entry, const DataSource& data,
+                 const std::string& input, const std::string& output, nlohmann::json& data_info) {
+  nlohmann::json units = nlohmann::json::object();
+  check_column_unit(options, entry, data, "input", input, entry.input_unit, units);
+  check_column_unit(options, entry, data, "output", output, entry.output_unit, units);
+  if (units.empty()) return;
+  if (options.units_intended) units["intended"] = true;
+  data_info["units"] = std::move(units);
+}
 
 //! --cycles, --detrend, --resample METHOD[:STEP], --band as data::Preprocessing.
 data::Preprocessing preprocessing(const FitOptions& options) {
@@ -296,6 +362,7 @@ void run_tables_fit(const FitOptions& options, const ModelEntry& entry) {
     columns.push_back(
         read_column_pair(data, options.input, options.output, fmt::format("table {}", table)));
     nlohmann::json info = {{"table", table}, {"samples", columns.back().input.size()}};
+    check_units(options, entry, data, options.input, options.output, info);
     if (timed) {
       sample_times.push_back(data::uniform_sample_time(
           data.column("Time"), fmt::format("{}: table {} column 'Time'", options.data, table)));
@@ -378,6 +445,7 @@ void run(const FitOptions& options) {
                               {"output", options.output},
                               {"samples", record.input.size()}};
   if (options.table) data_info["table"] = *options.table;
+  check_units(options, entry, data, options.input, options.output, data_info);
 
   // Validation: the last part of the record, or a separate record.
   std::optional<ColumnPair> held_out;
@@ -404,6 +472,8 @@ void run(const FitOptions& options) {
     const auto output =
         options.validation_output.empty() ? options.output : options.validation_output;
     held_out = read_column_pair(validation, input, output, "validation data");
+    nlohmann::json validation_units;
+    check_units(options, entry, validation, input, output, validation_units);
     request.validation_input = held_out->input;
     request.validation_output = held_out->output;
     data_info["validation"] = {{"kind", "separate record"},
@@ -412,6 +482,9 @@ void run(const FitOptions& options) {
                                {"output", output},
                                {"samples", held_out->input.size()}};
     if (options.validation_table) data_info["validation"]["table"] = *options.validation_table;
+    if (validation_units.contains("units")) {
+      data_info["validation"]["units"] = std::move(validation_units["units"]);
+    }
     request.validation.start = validation_start_from_string(options.validation_start);
     request.validation.align = validation_alignment_from_string(options.validation_align);
     data_info["validation"]["start"] = options.validation_start;
@@ -529,6 +602,10 @@ void add_fit_command(CLI::App& app) {
   command->add_option("--resample", options->resample,
                       "Resample each branch: input-grid[:STEP] (uniform input) or "
                       "arc-length[:STEP] (uniform normalised arc length)");
+  command->add_flag("--units-intended", options->units_intended,
+                    "Fit even where --data states units other than the model's (Jiles-Atherton: "
+                    "input H in A/m, output B in T; 'hyst models NAME'): the values are meant as "
+                    "they are. Without it such data are refused with the conversion to make");
   command->add_option("--band", options->band,
                       "Hysteresis band for reversals and cycles [input units] (default: 2 % of "
                       "the input range)");

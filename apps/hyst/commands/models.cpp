@@ -48,6 +48,8 @@ nlohmann::json entry_json(const ModelEntry& entry, bool with_schema) {
     json["parameters"] = schema_json(entry.parameters);
     json["fit_options"] = schema_json(entry.fit_options);
     json["example"] = example_model_file(entry);
+    if (!entry.input_unit.empty()) json["input_unit"] = entry.input_unit;
+    if (!entry.output_unit.empty()) json["output_unit"] = entry.output_unit;
   }
   return json;
 }
@@ -93,6 +95,13 @@ void run(const ModelsOptions& options) {
   fmt::print("{}: {}\n", entry.name, entry.description);
   fmt::print("can fit: {}; inverse (for the example parameters): {}\n\n",
              entry.can_fit() ? "yes" : "no", example_has_inverse(entry) ? "yes" : "no");
+  if (!entry.input_unit.empty() || !entry.output_unit.empty()) {
+    fmt::print(
+        "units: input in {}, output in {} ('hyst fit' refuses data whose file states others; "
+        "--units-intended)\n\n",
+        entry.input_unit.empty() ? "any unit" : entry.input_unit,
+        entry.output_unit.empty() ? "any unit" : entry.output_unit);
+  }
   fmt::print("parameters (the \"params\" object of a model file):\n");
   print_schema_table(entry.parameters);
   if (entry.can_fit()) {

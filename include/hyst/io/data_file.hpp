@@ -48,7 +48,8 @@ class DataFile {
   std::string choose(std::string_view given, std::string_view preferred,
                      std::string_view option) const;
 
-  //! The unit of a column where the file states it (aixACCT: "V" of "V+ [V]"), else "".
+  //! The unit of a column where the file states it (aixACCT: "V" of "V+ [V]"; MicroMag loop
+  //! files: "T", "Am²", "Oe", "emu" from the units line or "Units of measure"), else "".
   std::string unit(std::string_view name) const;
 
   //! "t, v, y".
@@ -66,6 +67,7 @@ class DataFile {
   std::optional<AixacctFile> aixacct_;
   std::size_t aixacct_table_ = 0;  //!< index into aixacct_->measurements
   std::vector<std::string> names_;
+  std::vector<std::string> units_;  //!< per column of names_ (MicroMag loop files), else empty
 };
 
 //! True for a ".mat" extension in any case (read as a MAT file).

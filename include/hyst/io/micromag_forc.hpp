@@ -1,8 +1,14 @@
 #pragma once
 //! \file
 //! Reader for first-order reversal curve (FORC) files of Princeton Measurements MicroMag 2900/3900
-//! magnetometers (AGM/VSM), as exported by the instrument software, in both layouts; which one a
-//! file has is read from its header (a "NData = N" line: Series 0015), not from a flag.
+//! magnetometers (AGM/VSM), as exported by the instrument software, in every layout below; which
+//! one a file has is read from its header (a "NData = N" entry: Series 0015; no header at all:
+//! the older two-line exports; else Series 0016), not from a flag. One header reader serves all
+//! of them: "key = value", "key : value" and "key   value" entries in any order and any section,
+//! up to the first data row; a segment table (titled "Segment ... Number", or rows numbered
+//! "0000001,...") is skipped. "Number of segments" is the script's count of field sweeps (a VSM
+//! FORC file writes it, e.g. 100, with no table); it is checked against the table's rows only
+//! where the file has a table.
 //!
 //! Series 0015 (AGM) layout (text, CRLF or LF line ends):
 //!
@@ -42,11 +48,17 @@
 //!
 //!     -1.000000E-01,-2.345678E-06,-1.900000E-01    <- FORC ...
 //!
-//! In both layouts the data are blocks apart by blank lines: one drift-calibration point measured
+//! Older exports ("MicroMag 2900/3900 Data File" without a series) have no header: the format
+//! line, the title ("First-order reversal curves" or "Direct moment vs. field; First-order
+//! reversal curves"), then the data from line 3; columns "Field", "Moment", units unknown.
+//!
+//! In every layout the data are blocks apart by blank lines: one drift-calibration point measured
 //! at HCal (near saturation) before every curve, then the curve; a trailing calibration block is
 //! allowed. A calibration point may also open its curve's block (its field above the curve's
-//! first, reversal field: the field falls from HCal to H_r). Units follow the units line, else
-//! "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 (cgs: Oe, emu).
+//! first, reversal field: the field falls from HCal to H_r). A file without calibration points
+//! is refused with the block that breaks the alternation. Units follow the units line, else
+//! "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 ("Cgs": Oe, emu); a file
+//! with neither leaves them "" (unknown).
 //!
 //! The reader checks the first line, that every data row is comma-separated finite numbers
 //! (std::from_chars, locale independent, a leading '+' accepted; "field,moment" in Series 0015,
@@ -64,7 +76,11 @@
 //! drift) every moment by the drift interpolated linearly between the calibration measured before
 //! and after its curve, relative to the first calibration.
 //! Source of the formats: the example file shipped with PmagPy
-//! (../shared/data/pmagpy_forc_micromag_agm, see its PROVENANCE.md) for Series 0015; for Series
+//! (../shared/data/pmagpy_forc_micromag_agm, see its PROVENANCE.md) for Series 0015; the key
+//! spellings, "Hybrid SI" / "Cgs" and the two-line older header as public FORC readers describe
+//! them (FORCIT's and FORCsensei's descriptions of MicroMag files, RockPy's MicroMag titles and
+//! numbered segment rows); a measured VSM FORC file refused for its "Number of segments 100"
+//! (no table) for the segment rule; for Series
 //! 0016 the header of the Series 0016 loop files (../shared/data/hystlab_vsm_hysteresis_loops)
 //! and the description of VSM FORC files (the header keys FORC programs read: HCal, NForc,
 //! "Number of data"); tests/data/micromag/series_0016.forc is a small file built from them.
@@ -89,7 +105,16 @@ using hyst::to_string;
 enum class MicromagForcLayout : unsigned char {
   series_0015,  //!< "key = value" / "key : value" header ending with "NData = N" (AGM)
   series_0016,  //!< sections of "key   value" entries and stacked column titles (VSM)
+  no_header,    //!< the format and title lines only, the data from line 3 (older exports)
 };
+//! "series_0015", "series_0016", "no_header" (Python's MicromagForcFile.layout).
+constexpr EnumNames<MicromagForcLayout, 3> enumerator_names(MicromagForcLayout) {
+  return {{
+      {MicromagForcLayout::series_0015, "series_0015"},
+      {MicromagForcLayout::series_0016, "series_0016"},
+      {MicromagForcLayout::no_header, "no_header"},
+  }};
+}
 
 struct MicromagForcFile {
   struct Curve {

@@ -28,20 +28,27 @@
 //!                                                                 field sweep segments
 //!     MicroMag 2900/3900 Data File ends                <- end marker
 //!
+//! Keys may come in any order and also as "key = value" or "key : value". The segment table is
+//! known by its titles ("Segment ... Number") or its numbered rows ("0000001,..."); a file
+//! may have "Number of segments" without a table (then `segments` is 0) or a table without the
+//! count. Older exports have only the format line ("MicroMag 2900/3900 Data File") and the
+//! title, then the data from line 3: columns "Field" and "Moment", units unknown.
+//!
 //! The data are the last block of comma rows; the first two columns are always the field and the
 //! moment as measured, further ones are e.g. a temperature or the "Adjusted" field and moment
 //! after the software's slope and offset correction. Columns are named from their title lines
 //! ("Field", "Moment", "Adjusted Moment", ...; "Column 3" when the titles cannot be matched).
-//! Units follow "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 (cgs: Oe,
+//! Units follow "Units of measure": "Hybrid SI" = field mu0 H in T, moment in A m^2 ("cgs": Oe,
 //! emu); a units line under the titles ("(T)  (Am²)", the "²" a Latin-1 byte) gives them per
 //! column. Header text and units are converted from Latin-1 to UTF-8 where they are not UTF-8.
 //!
 //! The reader checks the first line and the title (a FORC file is pointed to
 //! read_micromag_forc()), that every data row has the same number of fields and that each is a
 //! finite number (std::from_chars, locale independent, a leading '+' accepted), that the number of
-//! segment rows and of points equal "Number of segments" and "Number of data" when the header has
-//! them, and that the end marker is present (a truncated file fails). Errors throw hyst::Error
-//! naming the file, the 1-based line and the column:
+//! segment table rows equals "Number of segments" when the file has both, that the number of
+//! points equals "Number of data" when the header has it, and that the end marker is present (a
+//! truncated file fails). Errors throw hyst::Error naming the file, the 1-based line and the
+//! column:
 //!     CP4Q.hyst:95: column 2 ('Raw Moment'): '+2.9x-05' is not a finite number
 //!
 //! Source of the format: the HystLab example data (../shared/data/hystlab_vsm_hysteresis_loops,
@@ -66,7 +73,7 @@ struct MicromagLoopFile {
   //! "key   value" header lines, trimmed, in file order (section names such as "INSTRUMENT" are
   //! not entries; a key used in two sections, e.g. "Averaging time", appears twice).
   std::vector<std::pair<std::string, std::string>> header;
-  std::size_t segments = 0;          //!< rows of the segment table (0 without one)
+  std::size_t segments = 0;  //!< rows of the segment table (0 without one, whatever the count)
   std::vector<std::string> columns;  //!< data column names, unique, in file order
   //! Unit of each column: from the units line under the titles ("T", "Am²"; Latin-1 converted to
   //! UTF-8), else implied by "Units of measure" and the name ("Hybrid SI": Field T, Moment A m²);

@@ -104,6 +104,12 @@ struct ModelEntry {
   std::shared_ptr<const ActuatorForce> actuator_force;
   //! A small valid parameter set (for `hyst models --example`, tests and documentation).
   nlohmann::json example_params;
+  //! The units the model's parameters assume for its input and its output ("A/m" and "T" for
+  //! Jiles-Atherton: H and B); empty for a model whose parameters are in input and output units
+  //! (any). `hyst fit` refuses data whose file states other units (see 'hyst fit --help',
+  //! --units-intended).
+  std::string input_unit;
+  std::string output_unit;
   //! Inputs for which the example model is meant: its hysteresis shows within them and nothing
   //! overflows. The conformance tests drive every model with inputs from this range.
   InputRange example_input_range;
