@@ -5,9 +5,11 @@ the standard library, so that pip builds offline with no build requirements to f
 CMake: configures a Release build of the module alone in `build-wheel/` of the checkout (kept,
 so a second install only relinks), builds the module and its type stubs (target `hyst_python_stubs`) for the interpreter
 running pip, and packs the module into a wheel by hand (a zip with the `.dist-info` files of the
-wheel format: METADATA, WHEEL, RECORD with sha256 digests). numpy, which the module needs, is
-not declared as a requirement: it comes from Debian (python3-numpy, seen by a venv made with
---system-site-packages), and a declared one would make `pip wheel .` fetch it.
+wheel format: METADATA, WHEEL, RECORD with sha256 digests). The metadata comes from the
+[project] table of pyproject.toml: the requirement numpy (`Requires-Dist: numpy`), the extras
+(`Provides-Extra`, `Requires-Dist: matplotlib; extra == "plot"`, ...), the licence and the
+project's addresses (`Project-URL`). In a venv made with --system-site-packages Debian's packages
+(python3-numpy, ...) satisfy them offline; `pip wheel --no-deps .` makes the wheel alone.
 
 Settings, as `pip install . --config-settings KEY=VALUE` or environment variables:
   build-dir / HYST_WHEEL_BUILD_DIR   the CMake build folder (default: build-wheel)
@@ -57,21 +59,44 @@ def _tag():
     return f"{interpreter}-{interpreter}-{platform}"
 
 
+def _project():
+    """The [project] table of pyproject.toml."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python < 3.11
+        try:
+            import tomli as tomllib
+        except ModuleNotFoundError:
+            raise RuntimeError("hyst: reading pyproject.toml needs Python 3.11 (tomllib) or the "
+                               "package tomli (Debian: python3-tomli)") from None
+    with open(SOURCE / "pyproject.toml", "rb") as file:
+        return tomllib.load(file)["project"]
+
+
 def _metadata():
-    return "\n".join([
+    """The core metadata (METADATA, PKG-INFO) of the [project] table."""
+    project = _project()
+    lines = [
         "Metadata-Version: 2.1",
         f"Name: {NAME}",
         f"Version: {_version()}",
-        f"Summary: {_description()}",
-        "Requires-Python: >=3.9",
-        "License: BSD-3-Clause",
+        f"Summary: {project.get('description') or _description()}",
+        f"Requires-Python: {project['requires-python']}",
+        f"License: {project['license']['text']}",
         "License-File: LICENSE",
         "Classifier: License :: OSI Approved :: BSD License",
-        "",
-        "The Python module of hyst, a C++20 toolkit for hysteresis models: fit, invert,",
-        "compensate, simulate and control. See README.md of the repository.",
-        "",
-    ])
+    ]
+    lines += [f"Project-URL: {label}, {url}" for label, url in project.get("urls", {}).items()]
+    lines += [f"Requires-Dist: {requirement}" for requirement in project.get("dependencies", [])]
+    for extra, requirements in project.get("optional-dependencies", {}).items():
+        lines.append(f"Provides-Extra: {extra}")
+        lines += [f'Requires-Dist: {requirement}; extra == "{extra}"'
+                  for requirement in requirements]
+    readme = project.get("readme")
+    if readme:
+        lines.append("Description-Content-Type: text/markdown")
+        return "\n".join(lines) + "\n\n" + (SOURCE / readme).read_text(encoding="utf-8")
+    return "\n".join(lines) + "\n"
 
 
 def _dist_info():

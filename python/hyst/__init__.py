@@ -6,6 +6,16 @@ package adds what is Python's own: signatures that inspect.signature() and help(
 the rules on state, arrays and errors, follows.
 """
 
+try:
+    import numpy as _numpy  # noqa: F401  (the extension converts every array through numpy)
+except ImportError as _error:
+    raise ImportError(
+        "hyst needs numpy, which is not installed for this Python "
+        f"({_error}): install it (Debian: apt install python3-numpy; pip: pip install numpy; "
+        "a venv made with --system-site-packages sees Debian's)") from _error
+import inspect as _inspect
+import re as _re
+
 from . import _core
 from ._core import *  # noqa: F401,F403  (every binding, documented in _core)
 from ._core import __version__, data, io, signals  # noqa: F401
@@ -26,7 +36,10 @@ def _returning_fit_result(function):
             kwargs["progress"] = _as_progress_callback(kwargs["progress"], function.__name__)
         return FitResult(function(*args, **kwargs))
     fit.__name__ = fit.__qualname__ = function.__name__
-    fit.__doc__ = function.__doc__
+    # The binding's signature line with the type this wrapper returns (inspect.signature(), help()
+    # and the stubs read it): "fit(name: str, ...) -> hyst.FitResult".
+    line, _, rest = function.__doc__.partition("\n")
+    fit.__doc__ = _re.sub(r"\) -> [^\n]*$", ") -> hyst.FitResult", line) + "\n" + rest
     fit.__module__ = __name__
     return fit
 
@@ -42,5 +55,8 @@ def compare(*args, progress=None, **kwargs):
 compare.__doc__ = _core.compare.__doc__
 
 _add_signatures(globals(), (io, data, signals))
+# hyst.Error is raised with its message (and .field set after): Exception's own constructor.
+Error.__signature__ = _inspect.Signature(  # noqa: F405  (from _core)
+    [_inspect.Parameter("message", _inspect.Parameter.POSITIONAL_ONLY, annotation=str)])
 __doc__ = __doc__ + "\n" + (_core.__doc__ or "")
-del _name
+del _name, _inspect, _re

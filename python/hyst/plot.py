@@ -43,15 +43,16 @@ def _legend(ax):
 
 
 def loop(input, output, *, model=None, ax=None, x_label=None, y_label=None, x_unit=None,
-         y_unit=None, label="measured"):
+         y_unit=None, label="measured", color=None):
     """The loop output(input); with `model` (a hyst.Model or a typed model) also its simulated
-    loop, run from its start state over the same input."""
+    loop, run from its start state over the same input. `color`: the measured line's colour
+    (dark grey by default; e.g. "C1" to tell several loops on one Axes apart)."""
     ax = _axes(ax)
     x, x_name, x_unit = _signal(input, x_label, x_unit)
     y, y_name, y_unit = _signal(output, y_label, y_unit)
     if x.shape != y.shape:
         raise ValueError(f"hyst.plot.loop: input has {x.size} samples, output {y.size}")
-    ax.plot(x, y, label=label, color="0.3", linewidth=1.2)
+    ax.plot(x, y, label=label, color="0.3" if color is None else color, linewidth=1.2)
     if model is not None:
         simulated = model.simulate(x)
         name = getattr(model, "name", type(model).__name__)

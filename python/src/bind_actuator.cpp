@@ -35,7 +35,7 @@ class StatefulPid {
   control::Pid::State state_;
 };
 
-py::dict trace_to_dict(LoopTrace&& trace) {
+StrDict trace_to_dict(LoopTrace&& trace) {
   py::dict result;
   result["reference"] = to_array(std::move(trace.reference));
   result["measured"] = to_array(std::move(trace.measured));
@@ -47,7 +47,7 @@ py::dict trace_to_dict(LoopTrace&& trace) {
   return result;
 }
 
-py::dict metrics_to_dict(const control::TrackingMetrics& m) {
+StrDict metrics_to_dict(const control::TrackingMetrics& m) {
   py::dict result;
   result["rms_error"] = m.rms_error;
   result["max_error"] = m.max_error;
@@ -121,7 +121,8 @@ void bind_actuator(py::module_& module) {
           "position, current_reference, current, force, voltage.")
       .def(
           "compare",
-          [](const ActuatorConfig& c, const std::optional<std::filesystem::path>& plot_folder) {
+          [](const ActuatorConfig& c, const std::optional<std::filesystem::path>& plot_folder)
+              -> Typed<py::tuple, "Tuple[List[Dict[str, Any]], str]"> {
             // The plots are published as one set (hyst/io/output_set.hpp).
             std::optional<io::OutputSet> set;
             if (plot_folder) set.emplace(*plot_folder, std::vector<std::string>{});

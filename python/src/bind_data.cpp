@@ -38,7 +38,7 @@ py::dict pairs_to_dict(const std::vector<std::pair<std::string, std::string>>& p
   return dict;
 }
 
-py::tuple record_tuple(data::ResampledRecord&& record) {
+ArrayPair record_tuple(data::ResampledRecord&& record) {
   return py::make_tuple(to_array(std::move(record.input)), to_array(std::move(record.output)));
 }
 
@@ -74,7 +74,7 @@ void bind_aixacct(py::module_& io_module) {
            "A numeric metadata entry, or None.")
       .def(
           "to_dict",
-          [](const io::AixacctTable& t) {
+          [](const io::AixacctTable& t) -> ArrayDict {
             py::dict columns;
             for (const auto& column : t.columns)
               columns[py::str(column.header())] = readonly_copy(column.values);
@@ -179,7 +179,8 @@ void bind_corrections(py::module_& d) {
       .def_readonly("closure_error", &data::DriftRemoval::closure_error);
   d.def(
       "remove_offset",
-      [](const InputArray& values, std::string_view reference) {
+      [](const InputArray& values, std::string_view reference)
+          -> Typed<py::tuple, "Tuple[numpy.ndarray[numpy.float64], float]"> {
         auto removal = data::remove_offset(as_span(values, "values"),
                                            data::offset_reference_from_string(reference));
         return py::make_tuple(to_array(std::move(removal.values)), removal.offset);
@@ -241,7 +242,10 @@ void bind_corrections(py::module_& d) {
   d.def(
       "preprocess",
       [](const InputArray& input, const InputArray& output, double band, bool detrend,
-         std::optional<std::string> cycles, std::string_view resample, double resample_step) {
+         std::optional<std::string> cycles, std::string_view resample, double resample_step)
+          -> Typed<py::tuple,
+                   "Tuple[numpy.ndarray[numpy.float64], numpy.ndarray[numpy.float64], "
+                   "List[str]]"> {
         data::Preprocessing options;
         options.band = band;
         options.detrend = detrend;
@@ -264,12 +268,12 @@ void bind_files(py::module_& d) {
   d.def(
       "info",
       [](const std::filesystem::path& path, std::optional<std::size_t> table, double band_fraction,
-         std::optional<std::pair<std::string, std::string>> loop) {
+         std::optional<std::pair<std::string, std::string>> loop) -> StrDict {
         data::RecordInfoOptions options;
         options.table = table;
         options.band_fraction = band_fraction;
         options.loop = std::move(loop);
-        return json_to_python(data::record_info_json(data::record_info(path, options)));
+        return py::dict(json_to_python(data::record_info_json(data::record_info(path, options))));
       },
       "path"_a, "table"_a = py::none(), "band_fraction"_a = 0.02, "loop"_a = py::none(),
       "What a data file (CSV, .mat, aixACCT export, MicroMag loop file) holds, as a dict with the "
@@ -281,7 +285,7 @@ void bind_files(py::module_& d) {
   d.def(
       "extract",
       [](const std::filesystem::path& path, const std::vector<std::string>& columns,
-         std::optional<std::size_t> table, std::optional<std::filesystem::path> out) {
+         std::optional<std::size_t> table, std::optional<std::filesystem::path> out) -> ArrayDict {
         // Refused before reading: the output may not be the data file itself (also through links).
         if (out) io::check_outputs({{path, "path"}}, {{*out, "out"}});
         auto extracted = io::DataFile(path, table).columns_table(columns);

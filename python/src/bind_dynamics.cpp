@@ -97,11 +97,12 @@ py::array stack(const std::vector<Matrix>& matrices) {
   return out;
 }
 
-py::object stack_or_none(const std::vector<Eigen::MatrixXd>& matrices) {
+Typed<py::object, "Optional[numpy.ndarray[numpy.float64]]"> stack_or_none(
+    const std::vector<Eigen::MatrixXd>& matrices) {
   return matrices.empty() ? py::object(py::none()) : py::object(stack(matrices));
 }
 
-py::dict score_dict(const SimulationScore& score) {
+StrDict score_dict(const SimulationScore& score) {
   std::vector<double> rmse, relative, deviation;
   for (const auto& c : score.channels) {
     rmse.push_back(c.rmse);
@@ -143,9 +144,9 @@ const StateSpace& linear_block(const AnyHystereticLfr& model) {
 }
 
 template <class Model>
-py::dict evaluate_model(const Model& model, const py::object& input, const py::object& output,
-                        const std::string& layout, bool periodic, std::size_t transient,
-                        bool strict) {
+StrDict evaluate_model(const Model& model, const py::object& input, const py::object& output,
+                       const std::string& layout, bool periodic, std::size_t transient,
+                       bool strict) {
   const auto u = periodic_signals(input, layout, "input");
   const auto y = periodic_signals(output, layout, "output");
   const auto score =

@@ -84,7 +84,7 @@ void bind_identify(py::module_& module) {
           [](const FittedDomain& d, const InputArray& input) {
             const auto values = as_span(input, "input");
             const auto check = check_inputs(d, values);
-            return py::make_tuple(check.inside(), check.message(values.size()));
+            return std::make_pair(check.inside(), check.message(values.size()));
           },
           "input"_a,
           "(inside, message): whether every input lies within the fitted input range widened "
@@ -94,7 +94,7 @@ void bind_identify(py::module_& module) {
           [](const FittedDomain& d, const InputArray& targets) {
             const auto values = as_span(targets, "targets");
             const auto check = check_targets(d, values);
-            return py::make_tuple(check.inside(), check.message(values.size()));
+            return std::make_pair(check.inside(), check.message(values.size()));
           },
           "targets"_a, "(inside, message) of inverse targets against the fitted output range.");
 

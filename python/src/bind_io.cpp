@@ -27,7 +27,7 @@ char single_character(const std::optional<std::string>& text, std::string_view n
 }
 
 // Columns of a table moved into numpy arrays, in file order.
-py::dict table_to_dict(io::Table&& table) {
+ArrayDict table_to_dict(io::Table&& table) {
   py::dict columns;
   for (std::size_t j = 0; j < table.cols(); ++j)
     columns[py::str(table.names[j])] = to_array(std::move(table.columns[j]));
@@ -158,7 +158,7 @@ void bind_io(py::module_& module) {
       "path"_a, "variable"_a, "A 1 x N or N x 1 real numeric variable as a float64 array.");
   io_module.def(
       "read_mat_columns",
-      [](const std::filesystem::path& path, std::string_view variable) {
+      [](const std::filesystem::path& path, std::string_view variable) -> ArrayList {
         py::list columns;
         for (auto& column : io::read_mat_columns(path, variable))
           columns.append(to_array(std::move(column)));

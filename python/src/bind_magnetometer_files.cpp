@@ -58,7 +58,7 @@ void bind_micromag_loop(py::module_& io_module) {
            "A numeric header entry ('Slope correction'), or None.")
       .def(
           "to_dict",
-          [](const io::MicromagLoopFile& f) {
+          [](const io::MicromagLoopFile& f) -> ArrayDict {
             py::dict columns;
             for (std::size_t j = 0; j < f.columns.size(); ++j)
               columns[py::str(f.columns[j])] = readonly_copy(f.values[j]);
@@ -88,7 +88,7 @@ void bind_micromag_forc(py::module_& io_module) {
       .def_property_readonly("moment", [](const Curve& c) { return readonly_copy(c.moment); })
       .def_property_readonly(
           "more_columns",
-          [](const Curve& c) {
+          [](const Curve& c) -> ArrayList {
             py::list columns;
             for (const auto& column : c.more_columns)
               columns.append(readonly_copy(column));

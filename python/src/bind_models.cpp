@@ -336,7 +336,7 @@ void bind_inverse(py::module_& m) {
             require_finite(target, "target");
             check(i, state);
             const InverseSample sample = i.solve(state, target);
-            return py::make_tuple(sample.input, sample.status);
+            return std::make_pair(sample.input, sample.status);
           },
           "state"_a, "target"_a, "One sample: returns (input, InverseStatus) and advances `state`.")
       .def(
@@ -349,7 +349,7 @@ void bind_inverse(py::module_& m) {
           "state"_a, "target"_a, "solve() without the status.")
       .def(
           "invert",
-          [check](const Inverse& i, const InputArray& targets, PI::State* state) {
+          [check](const Inverse& i, const InputArray& targets, PI::State* state) -> InvertResult {
             const auto samples = as_span(targets, "targets");
             PI::State local;
             if (!state) {

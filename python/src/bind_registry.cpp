@@ -74,7 +74,7 @@ py::array_t<double> simulate_into(DynamicModel& model, const InputArray& input) 
 }
 
 // invert() of an inverse into a new array: (inputs, InverseReport).
-py::tuple invert_into(DynamicInverse& inverse, const InputArray& targets) {
+InvertResult invert_into(DynamicInverse& inverse, const InputArray& targets) {
   const auto samples = as_span(targets, "targets");
   std::vector<double> inputs(samples.size());
   InverseReport report;
@@ -134,7 +134,8 @@ void bind_registry(py::module_& module) {
       .def_property_readonly("can_fit_records", &ModelEntry::can_fit_records,
                              "True when hyst.fit_records() can fit several records together.")
       .def_property_readonly(
-          "example_params", [](const ModelEntry& e) { return json_to_python(e.example_params); },
+          "example_params",
+          [](const ModelEntry& e) { return StrDict(py::dict(json_to_python(e.example_params))); },
           "A small valid parameter set, as a dict.")
       .def("__repr__", [](const ModelEntry& e) {
         return fmt::format("ModelEntry(name='{}', can_fit={}, description='{}')", e.name,
@@ -144,17 +145,26 @@ void bind_registry(py::module_& module) {
   module.def(
       "models",
       [] {
-        py::list entries;
+        std::vector<const ModelEntry*> entries;
         for (const auto& entry : registry().entries())
-          entries.append(py::cast(&entry, py::return_value_policy::reference));
+          entries.push_back(&entry);
         return entries;
       },
+      py::return_value_policy::reference,
       "Every registered model (ModelEntry: name, description, parameters, can_fit, "
       "example_params).");
   module.def(
       "model_entry", [](std::string_view name) { return &registry().find(name); }, "name"_a,
       py::return_value_policy::reference, "The registry entry of a model; hyst.Error if unknown.");
 
+  // Declared first, so that the signature lines of the runners' methods name it (hyst.Model).
+  py::class_<DynamicModel> model(
+      module, "Model",
+      "Any registered model, chosen by name at run time, with its start state. Parameters and "
+      "state are dicts in the model-file form, e.g. Model('pi', {'thresholds': [0, 0.3], "
+      "'weights': [1, 0.5]}). A Model never changes when it runs: simulate() starts from the "
+      "start state (or a state passed in) every time; runner() gives a stateful copy for "
+      "step-by-step use.");
   py::class_<InverseRunner>(
       module, "InverseRunner",
       "An inverse with a running state, for step-by-step use (Inverse.runner()): every call "
@@ -180,7 +190,9 @@ void bind_registry(py::module_& module) {
           "the nearest reachable input; invert() reports it).")
       .def_property_readonly(
           "state",
-          [](const InverseRunner& runner) { return json_to_python(runner.inverse->state()); },
+          [](const InverseRunner& runner) {
+            return StrDict(py::dict(json_to_python(runner.inverse->state())));
+          },
           "The running state as a dict.")
       .def("reset", &InverseRunner::reset, "Back to the state the runner started from.");
 
@@ -202,7 +214,10 @@ void bind_registry(py::module_& module) {
           "runner", [](const DynamicInverse& inverse) { return InverseRunner(inverse.clone()); },
           "A stateful copy for step-by-step use, starting from the inverse's start state.")
       .def_property_readonly(
-          "state", [](const DynamicInverse& inverse) { return json_to_python(inverse.state()); },
+          "state",
+          [](const DynamicInverse& inverse) {
+            return StrDict(py::dict(json_to_python(inverse.state())));
+          },
           "The start state as a dict.");
 
   py::class_<ModelRunner>(
@@ -225,7 +240,10 @@ void bind_registry(py::module_& module) {
           },
           "input"_a, "The outputs for `input`, continuing from the running state (advanced).")
       .def_property(
-          "state", [](const ModelRunner& runner) { return json_to_python(runner.model->state()); },
+          "state",
+          [](const ModelRunner& runner) {
+            return StrDict(py::dict(json_to_python(runner.model->state())));
+          },
           [](ModelRunner& runner, const py::handle& state) {
             runner.model->set_state(python_to_json(state, "state"));
           },
@@ -243,23 +261,18 @@ void bind_registry(py::module_& module) {
           "to_model", [](const ModelRunner& runner) { return runner.model->clone(); },
           "A hyst.Model whose start state is the running state.");
 
-  py::class_<DynamicModel> model(
-      module, "Model",
-      "Any registered model, chosen by name at run time, with its start state. Parameters and "
-      "state are dicts in the model-file form, e.g. Model('pi', {'thresholds': [0, 0.3], "
-      "'weights': [1, 0.5]}). A Model never changes when it runs: simulate() starts from the "
-      "start state (or a state passed in) every time; runner() gives a stateful copy for "
-      "step-by-step use.");
   model
       .def(py::init(&create_model), "name"_a, "params"_a, "state"_a = py::none(),
            "Builds a registered model; hyst.Error names a bad field (\"params.thresholds[1]: "
            "...\").")
       .def_property_readonly("name", [](const DynamicModel& m) { return std::string(m.name()); })
       .def_property_readonly(
-          "params", [](const DynamicModel& m) { return json_to_python(m.params()); },
+          "params",
+          [](const DynamicModel& m) { return StrDict(py::dict(json_to_python(m.params()))); },
           "The parameters as a dict (a copy).")
       .def_property(
-          "state", [](const DynamicModel& m) { return json_to_python(m.state()); },
+          "state",
+          [](const DynamicModel& m) { return StrDict(py::dict(json_to_python(m.state()))); },
           [](DynamicModel& m, const py::handle& state) {
             m.set_state(python_to_json(state, "state"));
           },
@@ -271,7 +284,10 @@ void bind_registry(py::module_& module) {
           "simulate",
           [](const DynamicModel& m, const InputArray& input, const py::handle& state,
              bool return_state, std::optional<double> sample_time,
-             const std::optional<InputArray>& time) -> py::object {
+             const std::optional<InputArray>& time)
+              -> Typed<py::object,
+                       "Union[numpy.ndarray[numpy.float64], Tuple[numpy.ndarray[numpy.float64], "
+                       "Dict[str, Any]]]"> {
             auto run = m.clone();
             if (!state.is_none()) run->set_state(python_to_json(state, "state"));
             const auto axis = record_time_axis(sample_time, time, input.size());
@@ -340,7 +356,7 @@ void bind_registry(py::module_& module) {
       .def(
           "to_dict",
           [](const DynamicModel& m, const py::object& info) {
-            return json_to_python(model_to_json(m, info_json(info)));
+            return StrDict(py::dict(json_to_python(model_to_json(m, info_json(info)))));
           },
           "info"_a = py::none(), "The model-file document as a dict.")
       .def("__copy__", &DynamicModel::clone)
@@ -355,7 +371,7 @@ void bind_registry(py::module_& module) {
       "evaluate",
       [](const DynamicModel& m, const InputArray& input, const InputArray& output,
          std::string_view validation_start, std::string_view validation_align,
-         std::optional<double> sample_time, const std::optional<InputArray>& time) {
+         std::optional<double> sample_time, const std::optional<InputArray>& time) -> StrDict {
         const auto u = as_vector(input, "input");
         const auto y = as_vector(output, "output");
         const auto rule = saved_model_rule(validation_start, validation_align, "hyst.evaluate");
@@ -412,7 +428,7 @@ void bind_registry(py::module_& module) {
   module.def(
       "model_to_dict",
       [](const DynamicModel& m, const py::object& info) {
-        return json_to_python(model_to_json(m, info_json(info)));
+        return StrDict(py::dict(json_to_python(model_to_json(m, info_json(info)))));
       },
       "model"_a, "info"_a = py::none(), "The model-file document of a model in its current state.");
   module.def(
@@ -429,7 +445,7 @@ void bind_registry(py::module_& module) {
   module.def(
       "export_c",
       [](const DynamicModel& m, const std::filesystem::path& folder, const std::string& prefix,
-         bool single, double input_min, double input_max, const std::string& source) {
+         bool single, double input_min, double input_max, const std::string& source) -> StrDict {
         CExportOptions options;
         options.prefix = prefix;
         options.scalar = single ? CScalar::single_precision : CScalar::double_precision;
@@ -451,7 +467,7 @@ void bind_registry(py::module_& module) {
       [](const DynamicModel& m, const std::filesystem::path& folder, const std::string& prefix,
          bool single, bool inverse, const std::string& input_name, const std::string& output_name,
          const std::string& input_unit, const std::string& output_unit, double input_min,
-         double input_max, const std::string& compiler, const std::string& source) {
+         double input_max, const std::string& compiler, const std::string& source) -> StrDict {
         FmuExportOptions options;
         options.code.prefix = prefix;
         options.code.scalar = single ? CScalar::single_precision : CScalar::double_precision;

@@ -2,6 +2,8 @@
 // Shared helpers of the Python module `hyst`: numpy conversion without copies where possible,
 // JSON <-> Python objects, and one bind_* function per area of the library.
 
+#include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <new>
 #include <span>
@@ -22,6 +24,32 @@ namespace hyst::python {
 
 namespace py = pybind11;
 using namespace pybind11::literals;
+
+//! The text of a return annotation, as a template argument (Typed below).
+template <std::size_t N>
+struct Annotation {
+  constexpr Annotation(const char (&text)[N]) { std::copy_n(text, N, value); }  // NOLINT
+  char value[N];
+};
+//! A dict, tuple, list or object returned under the annotation `Name` in the signature line
+//! (pybind11 writes "-> dict" for a py::dict): "Dict[str, Any]", "Tuple[numpy.ndarray[...],
+//! hyst.InverseReport]". The stubs (python/stubgen/make_stubs.py) and inspect.signature() read it.
+template <class Base, Annotation Name>
+struct Typed : Base {
+  Typed() = default;
+  Typed(Base object) : Base(std::move(object)) {}  // NOLINT: implicit, from what a binding built
+};
+//! A dict keyed by names (columns, fields, files) with values of several types.
+using StrDict = Typed<py::dict, "Dict[str, Any]">;
+//! Columns by name: {name: float64 array}.
+using ArrayDict = Typed<py::dict, "Dict[str, numpy.ndarray[numpy.float64]]">;
+//! A list of float64 arrays.
+using ArrayList = Typed<py::list, "List[numpy.ndarray[numpy.float64]]">;
+//! What an inversion returns: (inputs, InverseReport).
+using InvertResult = Typed<py::tuple, "Tuple[numpy.ndarray[numpy.float64], hyst.InverseReport]">;
+//! (input, output) arrays.
+using ArrayPair =
+    Typed<py::tuple, "Tuple[numpy.ndarray[numpy.float64], numpy.ndarray[numpy.float64]]">;
 
 //! The default of unbounded keyword arguments (input_min, output_max...).
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -97,3 +125,10 @@ struct PythonCurve {
 std::vector<PythonCurve> curves_from_python(const py::sequence& sequence, std::string_view what);
 
 }  // namespace hyst::python
+
+namespace pybind11::detail {
+template <class Base, hyst::python::Annotation Name>
+struct handle_type_name<hyst::python::Typed<Base, Name>> {
+  static constexpr auto name = const_name(Name.value);
+};
+}  // namespace pybind11::detail

@@ -139,7 +139,8 @@ def render_function(parse, names, obj, name, module, indent="", returns=None, me
 
 def property_type(names, prop, module):
     doc = (prop.fget.__doc__ or "") if prop.fget else ""
-    match = re.match(r"\(self: [^)]*\) -> (.+)", doc.lstrip().split("\n", 1)[0])
+    # "(self: hyst.X) -> float", or "(arg0: hyst.X) -> float" for a lambda's getter.
+    match = re.match(r"\((?:self|arg0): [^)]*\) -> (.+)", doc.lstrip().split("\n", 1)[0])
     return names.annotation(match.group(1), module) if match else "Any"
 
 
@@ -193,7 +194,7 @@ def _static(lines, body):
     return out
 
 
-def render_module(parse, names, module, fits):
+def render_module(parse, names, module):
     out = [HEADER]
     name = module.__name__
     if name == "hyst":
@@ -213,8 +214,7 @@ def render_module(parse, names, module, fits):
         if inspect.isclass(member):
             out += render_class(parse, names, member, member_name, name)
         elif callable(member):
-            returns = "FitResult" if member_name in fits and name == "hyst" else None
-            out += render_function(parse, names, member, member_name, name, "", returns)
+            out += render_function(parse, names, member, member_name, name)
     return "\n".join(out) + "\n"
 
 
@@ -225,10 +225,10 @@ def main():
     from hyst._signatures import parse_signature
     names = Names(hyst)
     package = folder / "hyst"
-    stubs = {"__init__.pyi": render_module(parse_signature, names, hyst, hyst._FITS)}
+    stubs = {"__init__.pyi": render_module(parse_signature, names, hyst)}
     for module in (hyst.io, hyst.data, hyst.signals):
         stubs[f"{module.__name__.split('.')[-1]}.pyi"] = render_module(
-            parse_signature, names, module, ())
+            parse_signature, names, module)
     for file_name, text in stubs.items():
         ast.parse(text, filename=file_name)  # a generator bug fails the build, not a user
         (package / file_name).write_text(text)

@@ -35,6 +35,16 @@ def test_loop_with_a_model_and_units(tmp_path):
     assert (tmp_path / "loop.png").stat().st_size > 1000
 
 
+def test_loops_on_one_axes_take_a_colour_each():
+    v, y = loop_record()
+    ax = hyst.plot.loop(v, y, label="first")
+    ax = hyst.plot.loop(v, 2 * y, ax=ax, label="second", color="C1")
+    first, second = ax.get_lines()
+    assert first.get_color() == "0.3"  # the default: dark grey
+    assert matplotlib.colors.same_color(second.get_color(), "C1")
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["first", "second"]
+
+
 @pytest.mark.skipif(not AIXACCT.is_file(), reason="shared data not found")
 def test_columns_of_a_data_file_label_the_axes_with_their_units():
     columns = {column.name: column for column in

@@ -83,10 +83,81 @@ void split(std::string_view line, char separator, std::vector<std::string_view>&
 }
 
 char detect_separator(std::string_view header) {
+  // Characters inside a quoted name ("a;b") separate nothing.
+  std::string outside;
+  bool quoted = false;
+  for (const char c : header) {
+    if (c == '"') quoted = !quoted;
+    if (!quoted) outside.push_back(c);
+  }
   for (const char candidate : kDetectionOrder) {
-    if (candidate == ' ' || header.find(candidate) != std::string_view::npos) return candidate;
+    if (candidate == ' ' || outside.find(candidate) != std::string::npos) return candidate;
   }
   return ' ';
+}
+
+//! The column names of a header line, split like the rows (split()), except that a name in
+//! double quotes (RFC 4180) is the text between them, with "" standing for one quote; it may hold
+//! the separator and blanks. Throws for a quote left open or text after a closing quote.
+std::vector<std::string> header_names(std::string_view line, char separator,
+                                      const std::string& where) {
+  // Blanks around a name; a tab that separates is not one of them.
+  const auto blank = [separator](char c) {
+    return (c == ' ' || c == '\t') && (separator == ' ' || c != separator);
+  };
+  std::vector<std::string> names;
+  std::size_t k = 0;
+  const auto skip_blanks = [&] {
+    while (k < line.size() && blank(line[k]))
+      ++k;
+  };
+  skip_blanks();
+  while (true) {
+    std::string name;
+    const std::size_t column = names.size() + 1;
+    if (k < line.size() && line[k] == '"') {
+      for (++k;; ++k) {
+        if (k >= line.size()) {
+          throw Error(fmt::format("{}column {} of the header: the quoted name has no closing quote",
+                                  where, column));
+        }
+        if (line[k] == '"') {
+          if (k + 1 < line.size() && line[k + 1] == '"') {
+            name.push_back('"');
+            ++k;
+            continue;
+          }
+          ++k;
+          break;
+        }
+        name.push_back(line[k]);
+      }
+      const std::size_t closed = k;
+      skip_blanks();
+      const bool next = k < line.size();
+      if (next && (separator == ' ' ? k == closed : line[k] != separator)) {
+        throw Error(
+            fmt::format("{}column {} of the header: text after the closing quote of the name '{}'",
+                        where, column, excerpt(name)));
+      }
+    } else {
+      const std::size_t start = k;
+      while (k < line.size() && (separator == ' ' ? !blank(line[k]) : line[k] != separator))
+        ++k;
+      name = std::string(trim_blanks(line.substr(start, k - start)));
+      skip_blanks();
+    }
+    names.push_back(std::move(name));
+    if (k >= line.size()) return names;
+    if (separator != ' ') {
+      ++k;  // the separator
+      skip_blanks();
+      if (k >= line.size()) {  // a trailing separator: an empty last name, as split() gives
+        names.emplace_back();
+        return names;
+      }
+    }
+  }
 }
 
 //! Parses one field as a finite double; throws naming file, line and column.
@@ -195,7 +266,18 @@ std::string format_table(const Table& table, const CsvWriteOptions& options,
   auto sink = std::back_inserter(out);
   for (std::size_t j = 0; j < table.names.size(); ++j) {
     if (j > 0) out.push_back(separator);
-    out += table.names[j];
+    const std::string& name = table.names[j];
+    if (name.front() != '"') {
+      out += name;
+      continue;
+    }
+    // Read back unquoted otherwise (RFC 4180): quoted, each quote doubled.
+    out.push_back('"');
+    for (const char c : name) {
+      if (c == '"') out.push_back('"');
+      out.push_back(c);
+    }
+    out.push_back('"');
   }
   out.push_back('\n');
   for (std::size_t r = 0; r < rows; ++r) {
@@ -273,24 +355,25 @@ Table parse_csv(std::string_view text, std::string_view source_name,
 
   Table table;
   table.source = std::string(source);
-  split(line, separator, fields);
+  const std::vector<std::string> names = header_names(line, separator, prefix(source, header_line));
   std::unordered_map<std::string_view, std::size_t> column_of_name;
-  for (std::size_t j = 0; j < fields.size(); ++j) {
-    if (fields[j].empty()) {
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    const std::string_view name = names[j];
+    if (name.empty()) {
       throw Error(fmt::format("{}column {} of the header has an empty name",
                               prefix(source, header_line), j + 1));
     }
-    if (const std::string problem = name_problem(fields[j]); !problem.empty()) {
+    if (const std::string problem = name_problem(name); !problem.empty()) {
       throw Error(fmt::format("{}column {} of the header: the name {}", prefix(source, header_line),
                               j + 1, problem));
     }
     // A map, not a pairwise comparison: a header may have a million columns.
-    if (const auto [first, inserted] = column_of_name.emplace(fields[j], j); !inserted) {
+    if (const auto [first, inserted] = column_of_name.emplace(name, j); !inserted) {
       throw Error(fmt::format("{}column {} ('{}') has the same name as column {}",
-                              prefix(source, header_line), j + 1, excerpt(fields[j]),
+                              prefix(source, header_line), j + 1, excerpt(name),
                               first->second + 1));
     }
-    table.names.emplace_back(fields[j]);
+    table.names.emplace_back(name);
   }
   table.columns.resize(table.names.size());
 

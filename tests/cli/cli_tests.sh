@@ -219,7 +219,29 @@ case_models() {
   expect_stdout "model:      pi" "inverse:    yes"
   expect_ok "$HYST" models pi --json
   expect_stdout '"parameters"' '"fit_options"' '"example"' '"version": 1' '"default": "10"'
-  expect_error 1 "unknown model 'nosuch'" "known: pi" -- "$HYST" models nosuch
+  expect_error 1 "unknown model 'nosuch'" "known: pi" "state_space, hysteretic_lfr" -- \
+    "$HYST" models nosuch
+  # The dynamic multi-input models, whose files have forms of their own, are listed too, and
+  # 'hyst models NAME' shows their file format with an example that hyst reads.
+  expect_ok "$HYST" models
+  expect_stdout "Dynamic multi-input models" "state_space" "hysteretic_lfr"
+  awk '$1 == "state_space" && $2 == "yes" && $3 == "no" { s = 1 }
+       $1 == "hysteretic_lfr" && $2 == "yes" && $3 == "no" { h = 1 } END { exit !(s && h) }' \
+    "$WORK/stdout" || fail "hyst models lists the dynamic models without fit/invert columns"
+  expect_ok "$HYST" models --json
+  expect_stdout '"name": "state_space"' '"name": "hysteretic_lfr"' '"kind": "dynamic"'
+  expect_ok "$HYST" models state_space
+  expect_stdout "sample_time" "x[k+1] = A x[k]" "hyst fit-system" "example model file:"
+  sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >state_space.json
+  expect_ok "$HYST" info state_space.json
+  expect_stdout "1 states, 1 inputs, 1 outputs" "sample time: 0.01 s"
+  expect_ok "$HYST" models hysteretic_lfr
+  expect_stdout "feedback" "linear" "among: pi," "example model file:"
+  sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >hysteretic_lfr.json
+  expect_ok "$HYST" info hysteretic_lfr.json
+  expect_stdout "1 'pi' channels"
+  expect_ok "$HYST" models hysteretic_lfr --json
+  expect_stdout '"parameters"' '"example"' '"feedback"'
 }
 
 case_every_model() {
@@ -231,7 +253,8 @@ case_every_model() {
   expect_ok "$HYST" models
   local names name listing
   listing="$(cat "$WORK/stdout")"
-  names="$(awk 'NR > 1 && ($2 == "yes" || $2 == "no") { print $1 }' "$WORK/stdout")"
+  # The registry's table, up to the blank line before the dynamic models (case_models).
+  names="$(awk 'NF == 0 { exit } NR > 1 && ($2 == "yes" || $2 == "no") { print $1 }' "$WORK/stdout")"
   [ -n "$names" ] || fail "hyst models listed no model"
   for name in $names; do
     local can_fit can_invert
@@ -361,8 +384,9 @@ JSON
     fail "the LFR fitted to a linear system is worse than its linear model: $(cat "$WORK/stdout")"
   # The same for a Hammerstein system, with the linear block free: 3 PI weights, the pole, B, C
   # and D.
+  # No --sample-time: the linear model's (0.01 s) is the fit's.
   expect_ok "$HYST" fit-system --model hammerstein --linear lag.json --data lag.csv --input u \
-    --output y --samples-per-period 64 --sample-time 0.01 --thresholds 0,0.2,0.5,0.8 \
+    --output y --samples-per-period 64 --thresholds 0,0.2,0.5,0.8 \
     --hysteresis-iterations 5 --out lag_hammerstein.json
   expect_stdout "hammerstein fitted by" "the linear block's poles, B, C and D" "with 7 parameters" \
     "wrote lag_hammerstein.json: hammerstein model (a hysteretic_lfr file), 1 states"
@@ -380,6 +404,10 @@ JSON
   expect_error 1 "--linear: only with --model hysteretic_lfr or hammerstein" -- "$HYST" fit-system \
     --linear lag.json --data lag.csv --input u --output y --samples-per-period 64 \
     --sample-time 0.01 --out x.json
+  expect_ok "$HYST" info lag_hammerstein.json
+  expect_stdout "sample time: 0.01 s"
+  expect_error 1 "--sample-time is required (or --linear" -- "$HYST" fit-system --data lag.csv \
+    --input u --output y --samples-per-period 64 --out x.json
   expect_error 1 "--linear lag.json: sample time 0.01 s, but --sample-time is 0.02 s" -- \
     "$HYST" fit-system --model hysteretic_lfr --linear lag.json --data lag.csv --input u \
     --output y --samples-per-period 64 --sample-time 0.02 --out x.json

@@ -187,6 +187,37 @@ TEST(ParseCsv, HeaderNamesMustBePresentAndUnique) {
                     "data.csv:1: column 3 ('y') has the same name as column 2");
 }
 
+TEST(ParseCsv, QuotedHeaderNamesLoseTheirQuotes) {
+  // RFC 4180: a name in double quotes is the text between them; "" is one quote, and the
+  // separator or blanks inside a quoted name separate nothing.
+  const Table table =
+      parse_csv("\"t\", \"v [V]\" ,\"say \"\"hi\"\"\",\"a,b\",u\"x\n0,1,2,3,4\n", "q.csv");
+  EXPECT_EQ(table.names, (std::vector<std::string>{"t", "v [V]", "say \"hi\"", "a,b", "u\"x"}));
+  EXPECT_EQ(table.column("v [V]"), (std::vector<double>{1.0}));
+  // Quoted names decide neither the separator nor the columns: ';' inside quotes, ',' outside.
+  EXPECT_EQ(parse_csv("\"x;1\",\"y;2\"\n1,2\n", "q.csv").names,
+            (std::vector<std::string>{"x;1", "y;2"}));
+  // Runs of blanks separate quoted names too.
+  EXPECT_EQ(parse_csv("\"time s\"  \"v\"\n0 1\n", "q.csv", {.separator = ' '}).names,
+            (std::vector<std::string>{"time s", "v"}));
+  EXPECT_HYST_ERROR(parse_csv("t,\"v\n0,1\n", "q.csv"),
+                    "q.csv:1: column 2 of the header: the quoted name has no closing quote");
+  EXPECT_HYST_ERROR(
+      parse_csv("\"v\"x,t\n0,1\n", "q.csv"),
+      "q.csv:1: column 1 of the header: text after the closing quote of the name 'v'");
+  EXPECT_HYST_ERROR(parse_csv("\"\",t\n0,1\n", "q.csv"),
+                    "q.csv:1: column 1 of the header has an empty name");
+  EXPECT_HYST_ERROR(parse_csv("\"t\",t\n0,1\n", "q.csv"),
+                    "q.csv:1: column 2 ('t') has the same name as column 1");
+}
+
+TEST(FormatCsv, ANameStartingWithAQuoteIsWrittenQuotedAndReadsBack) {
+  const Table table = make_table({"\"q\" x", "y\"z"}, {{1.0}, {2.0}});
+  const std::string text = format_csv(table);
+  EXPECT_EQ(text, "\"\"\"q\"\" x\",y\"z\n1,2\n");
+  expect_identical(parse_csv(text, "round.csv"), table);
+}
+
 TEST(ParseCsv, UnnamedSourceUsesLineNumbersOnly) {
   EXPECT_HYST_ERROR(parse_csv("t\nq\n", ""), "line 2: column 1 ('t'): 'q' is not a number");
   try {

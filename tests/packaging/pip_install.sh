@@ -25,7 +25,8 @@ python="$scratch/venv/bin/python"
 # starts unless the backend clears it).
 touch -d '2000-01-01' "$build/python/hyst/__init__.pyi"
 
-"$python" -m pip wheel "$checkout" --wheel-dir "$scratch/wheels" >"$scratch/wheel.log" 2>&1 ||
+# --no-deps: the wheel alone (its requirement numpy is Debian's here; pip wheel would fetch one).
+"$python" -m pip wheel --no-deps "$checkout" --wheel-dir "$scratch/wheels" >"$scratch/wheel.log" 2>&1 ||
   { tail -n 30 "$scratch/wheel.log"; fail "pip wheel failed"; }
 wheel=$(ls "$scratch"/wheels/hyst-*.whl) || fail "no wheel in $(ls "$scratch/wheels")"
 "$python" - "$wheel" <<'PY' || fail "the wheel is malformed"
@@ -46,13 +47,31 @@ for line in wheel.read(record).decode().splitlines():
 assert sorted(l.split(",")[0] for l in wheel.read(record).decode().splitlines()) == sorted(names)
 # The licence: named in the metadata, its text beside it.
 metadata = wheel.read(next(n for n in names if n.endswith(".dist-info/METADATA"))).decode()
-assert "License: BSD-3-Clause" in metadata.splitlines(), metadata
+lines = metadata.split("\n\n", 1)[0].splitlines()
+assert "License: BSD-3-Clause" in lines, metadata
+# The requirement, the extras with their requirements, the project's addresses.
+assert "Requires-Dist: numpy" in lines, lines
+for extra, requirement in (("plot", "matplotlib"), ("progress", "tqdm"),
+                           ("distributed", "distributed")):
+    assert f"Provides-Extra: {extra}" in lines, lines
+    assert f'Requires-Dist: {requirement}; extra == "{extra}"' in lines, lines
+urls = [line for line in lines if line.startswith("Project-URL: ")]
+assert {url.split(": ", 1)[1].split(",")[0] for url in urls} >= {"Homepage", "Source", "Issues"}, urls
+assert all(url.split(", ", 1)[1].startswith("https://") for url in urls), urls
+assert "Description-Content-Type: text/markdown" in lines and "# hyst" in metadata, lines
 licence = wheel.read(next(n for n in names if n.endswith(".dist-info/LICENSE"))).decode()
 assert licence.startswith("BSD 3-Clause License"), licence[:80]
 PY
 
 "$python" -m pip install "$checkout" >"$scratch/install.log" 2>&1 ||
   { tail -n 30 "$scratch/install.log"; fail "pip install failed"; }
+# pip sees hyst's declared requirements satisfied (Debian's numpy in the system site packages);
+# pip check also reports other Debian packages' gaps, which are not hyst's.
+"$python" -m pip check >"$scratch/check.log" 2>&1 || true
+! grep -i '^hyst ' "$scratch/check.log" || fail "pip check: hyst's requirements are not met"
+"$python" -c "
+from importlib.metadata import requires
+assert 'numpy' in requires('hyst'), requires('hyst')" || fail "the installed hyst does not require numpy"
 cd "$scratch"
 location=$("$python" -c "import hyst; print(hyst.__file__)")
 case "$location" in

@@ -7,6 +7,7 @@
 # make test) is left out: it is what runs this. `pip install .` is pointed at the build folder
 # (HYST_WHEEL_BUILD_DIR) so that it does not compile the library again.
 # A block fails the test when one of its commands fails; the files the README names are checked.
+# The ```cpp blocks are compiled against the installed library and run first.
 #
 # Usage: readme_commands.sh README.md BUILD_DIR SHARED_DATA_DIR
 set -euo pipefail
@@ -28,6 +29,45 @@ ln -s "$build" "$scratch/hyst/build"
 cd "$scratch/hyst"
 export HYST_WHEEL_BUILD_DIR="$build" PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_NO_INPUT=1
 unset PYTHONPATH
+
+# Every ```cpp block is a whole program: installed with the library (cmake --install) and built
+# as a user's project would (find_package(hyst COMPONENTS core), hyst::core), then run.
+cmake --install "$build" --prefix "$scratch/prefix" >"$scratch/install.log" ||
+  { cat "$scratch/install.log"; echo "FAIL: cmake --install of $build"; exit 1; }
+awk -v dir="$scratch/cpp" '
+  /^```cpp$/ { inside = 1; ++blocks; file = sprintf("%s/block%d.cpp", dir, blocks)
+               system("mkdir -p " dir); printf "" > file; next }
+  /^```$/ && inside { inside = 0; close(file); next }
+  inside { print > file }
+  END { if (blocks < 1) { print "no cpp block found" > "/dev/stderr"; exit 1 } }
+' "$readme"
+for source in "$scratch"/cpp/block*.cpp; do
+  name=$(basename "$source" .cpp)
+  # What a block uses it includes itself (not through another header), e.g. hyst::Error.
+  if grep -q 'hyst::Error' "$source" && ! grep -q '#include "hyst/core/error.hpp"' "$source"; then
+    echo "FAIL: the README's C++ $name uses hyst::Error without #include \"hyst/core/error.hpp\""
+    exit 1
+  fi
+  mkdir -p "$scratch/cpp/$name.project"
+  cp "$source" "$scratch/cpp/$name.project/main.cpp"
+  cat >"$scratch/cpp/$name.project/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.25)
+project($name LANGUAGES CXX)
+find_package(hyst REQUIRED COMPONENTS core)
+add_executable($name main.cpp)
+target_link_libraries($name PRIVATE hyst::core)
+CMAKE
+  if ! { cmake -S "$scratch/cpp/$name.project" -B "$scratch/cpp/$name.build" \
+           -DCMAKE_PREFIX_PATH="$scratch/prefix" -DCMAKE_BUILD_TYPE=Release &&
+         cmake --build "$scratch/cpp/$name.build"; } >"$scratch/cpp/$name.log" 2>&1; then
+    echo "FAIL: the README's C++ block $name does not compile as written:"
+    tail -n 40 "$scratch/cpp/$name.log"
+    exit 1
+  fi
+  "$scratch/cpp/$name.build/$name" >"$scratch/cpp/$name.out" 2>&1 ||
+    { cat "$scratch/cpp/$name.out"; echo "FAIL: the README's C++ block $name failed"; exit 1; }
+  echo "README C++ $name: $(cat "$scratch/cpp/$name.out")"
+done
 
 # Every ```sh block but the set-up commands, each announced with its line in the README.
 awk '

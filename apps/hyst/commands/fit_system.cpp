@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,7 @@ namespace {
 struct FitSystemOptions {
   std::string model = "state_space";
   DynamicDataOptions data;
-  double sample_time = 0.0;
+  std::optional<double> sample_time;  // with --linear: that model's when not given
   std::size_t order = 2;
   std::string weighting = "none";
   std::size_t max_iterations = 200;
@@ -128,9 +129,14 @@ void fit_with_hysteresis(const FitSystemOptions& options,
 
 // What the options ask for, bounded before any data is read.
 void check_counts(const FitSystemOptions& options) {
-  if (!std::isfinite(options.sample_time) || !(options.sample_time > 0.0))
+  if (!options.sample_time && options.linear.empty())
+    throw Error(
+        "--sample-time is required (or --linear: a state_space model file, whose sample "
+        "time is taken)");
+  if (options.sample_time &&
+      (!std::isfinite(*options.sample_time) || !(*options.sample_time > 0.0)))
     throw Error(fmt::format("--sample-time {:g}: the sample time must be finite and > 0 s",
-                            options.sample_time));
+                            *options.sample_time));
   if (options.linear.empty() && (options.order < 1 || options.order > kMaxStateSpaceFitOrder))
     throw Error(fmt::format("--order {}: the order must be in 1..{} (the limit of a fit's order)",
                             options.order, kMaxStateSpaceFitOrder));
@@ -164,14 +170,15 @@ void run(const FitSystemOptions& options) {
   for (std::size_t i = 0; i < experiments.size(); ++i)
     fmt::print("experiment {}: {}\n", i + 1, describe_experiment(options.data, i, experiments[i]));
   if (!options.linear.empty()) {
+    // The linear model's sample time is the fit's; --sample-time, when given, must repeat it.
     const auto linear = load_state_space(options.linear).model;
-    if (linear.sample_time() != options.sample_time)
+    if (options.sample_time && linear.sample_time() != *options.sample_time)
       throw Error(fmt::format("--linear {}: sample time {:g} s, but --sample-time is {:g} s",
-                              options.linear, linear.sample_time(), options.sample_time));
+                              options.linear, linear.sample_time(), *options.sample_time));
     return fit_with_hysteresis(options, experiments, linear);
   }
 
-  const auto bla = estimate_bla(experiments, options.sample_time,
+  const auto bla = estimate_bla(experiments, *options.sample_time,
                                 {options.excitation_threshold, options.transient_periods});
   fmt::print(
       "best linear approximation: {} excited lines ({:g} to {:g} Hz), {} blocks of {} "
@@ -209,8 +216,9 @@ void add_fit_system_command(CLI::App& app) {
                    "it). Both are fitted from the linear model on the simulation error")
       ->capture_default_str();
   add_dynamic_data_options(*command, options->data, true);
-  command->add_option("--sample-time", options->sample_time, "Sample time Ts [s], finite and > 0")
-      ->required();
+  command->add_option("--sample-time", options->sample_time,
+                      "Sample time Ts [s], finite and > 0; with --linear taken from that model "
+                      "(given as well, it must be the same)");
   command
       ->add_option("--order", options->order,
                    fmt::format("Number of states, 1 to {}", kMaxStateSpaceFitOrder))
