@@ -147,9 +147,9 @@ def _run_task(task: _Task) -> RecordResult:
         input, output = columns[task.input], columns[task.output]
         if input.size == 0:
             raise hyst.Error(f"{task.path}: input '{task.input}' has no samples")
-        timed = {"time": columns[task.time]} if task.time else {}
+        time_axis = columns[task.time] if task.time else None
         try:
-            result = hyst.fit(task.model, input, output, **timed, **task.options)
+            result = hyst.fit(task.model, input, output, time=time_axis, **task.options)
         except hyst.Error as error:
             if not task.time:
                 raise
