@@ -29,12 +29,14 @@ constexpr std::string_view kCreepTypes = R"(#define @_OPERATORS %N%
 /* Storage of the lags: @_LAGS * @_OPERATORS, at least 1 (C has no empty arrays). */
 #define @_CREEP_SIZE %SIZE%
 %DEAD_ZONE_SIZE%
-/* Parameters: thresholds r_j [input units], weights p_j, the lags' decays a_i = exp(-Ts / tau_i)
-   at the sample time Ts = %TS% s, creep weights c_ij (row i: lag, column j: play) and the
+/* Parameters: thresholds r_j [input units], weights p_j, the lags' time constants tau_i [s] and
+   their decays a_i = exp(-Ts / tau_i) at the sample time Ts (fitted: %TS% s;
+   @_set_sample_time() sets another), creep weights c_ij (row i: lag, column j: play) and the
    offset y_off. */
 typedef struct {
   @_real thresholds[@_OPERATORS];
   @_real weights[@_OPERATORS];
+  @_real time_constants[@_CREEP_SIZE];
   @_real decay[@_CREEP_SIZE];
   @_real creep_weights[@_CREEP_SIZE];
   @_real offset;
@@ -70,6 +72,9 @@ void @_reset(@_state *state) {
   @_copy(state->play, @_PLAY_RESET, @_OPERATORS);
   @_copy(state->creep, @_CREEP_RESET, @_CREEP_SIZE);
 }
+
+void @_set_sample_time(@_params *params, double sample_time) {
+%SET_DECAYS%}
 
 @_real @_step(const @_params *params, @_state *state, @_real input) {
   @_real output = params->offset;
@@ -149,6 +154,12 @@ static void @_resynchronise(const @_inverse_params *params, @_inverse_state *sta
   if (input != sum) @_resynchronise(params, state);
   return input;
 }
+)";
+
+// a_i = exp(-Ts / tau_i) as the library computes it (in double precision).
+constexpr std::string_view kSetDecays = R"(  unsigned int i;
+  for (i = 0; i < @_LAGS; ++i)
+    params->decay[i] = (@_real)exp(-sample_time / (double)params->time_constants[i]);
 )";
 
 // The lags' part of the step and of the inverse's creep memory; none without lags (a loop to 0
@@ -247,10 +258,10 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   code.parameters = {c_array("thresholds", p.thresholds, CUnit::input, "play thresholds r_j",
                              CRule::increasing_from_zero),
                      c_array("weights", p.weights, weight_unit, "play weights p_j")};
+  code.resamplable = true;
   if (model.lags() > 0) {
-    code.parameters.push_back(c_array("decay", model.decay(), CUnit::none,
-                                      "lag decays a_i = exp(-Ts / tau_i) at the sample time",
-                                      CRule::open_unit_interval));
+    code.parameters.push_back(c_array("time_constants", p.time_constants, CUnit::seconds,
+                                      "lag time constants tau_i [s]", CRule::positive));
     code.parameters.push_back(c_array("creep_weights", p.creep_weights, weight_unit,
                                       "creep weights c_ij (row i: lag, column j: play)"));
   }
@@ -276,7 +287,11 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
                                                          {"DEAD_ZONE_SIZE", text.size},
                                                          {"SHAPE_FIELDS", text.fields}}) +
                 c_model_declarations("every play and lag at 0",
-                                     "updates the plays and the lags and returns the output.");
+                                     "updates the plays and the lags and returns the output.") +
+                "/* The lags' decays at the sample time `sample_time` [s] > 0, from their time\n"
+                "   constants: the step then runs at that sample time (the model is continuous "
+                "in time). */\n"
+                "void @_set_sample_time(@_params *params, double sample_time);\n";
   std::vector<double> decay = model.decay();
   decay.resize(creep_size, 0.0);
   std::string shaping_values;
@@ -289,10 +304,11 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   code.source =
       (shaping ? std::string(c_dead_zone_function()) : std::string()) +
       CWriter::fill(
-          "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %A%,\n    %C%,\n"
+          "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %TAU%,\n    %A%,\n    %C%,\n"
           "    %OFF%%SHAPING%};\n\n",
           {{"R", writer.table(p.thresholds)},
            {"P", writer.table(p.weights)},
+           {"TAU", writer.table(padded_for_c(p.time_constants))},
            {"A", writer.table(decay)},
            {"C", writer.table(padded_for_c(p.creep_weights))},
            {"OFF", writer.number(p.offset)},
@@ -303,7 +319,9 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       creep_state_table(writer, "PLAY_RESET", "@_OPERATORS", reset.play) +
       creep_state_table(writer, "CREEP_RESET", "@_CREEP_SIZE", reset.creep) + "\n" +
       CWriter::fill(with_lags(kCreepModelFunctions, "LAG_STEP", kLagStep, model.lags()),
-                    {{"SHAPE", text.step}});
+                    {{"SHAPE", text.step},
+                     {"SET_DECAYS", model.lags() > 0 ? std::string(kSetDecays)
+                                                     : "  (void)params;\n  (void)sample_time;\n"}});
   if (!code.has_inverse) return code;
 
   const InversePrandtlIshlinskiiCreep inverse(model,

@@ -218,6 +218,7 @@ CCode assemble_c_files(const CWriter& writer, const CModelCode& code,
   files.parameters = code.parameters;
   files.inverse_parameters = code.inverse_parameters;
   files.sample_time = code.sample_time;
+  if (code.resamplable) files.set_sample_time = writer.prefix() + "_set_sample_time";
   files.state_check = writer.expand(code.state_check);
   files.inverse_state_check = writer.expand(code.inverse_state_check);
   const std::string declarations = writer.expand(code.header);

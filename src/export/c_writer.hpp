@@ -25,6 +25,7 @@ struct CModelCode {
   std::vector<CParameterField> parameters;          //!< see CCode::parameters
   std::vector<CParameterField> inverse_parameters;  //!< see CCode::inverse_parameters
   double sample_time = 0.0;                         //!< see CCode::sample_time
+  bool resamplable = false;                         //!< see CCode::set_sample_time
   std::string state_check = "1";                    //!< see CCode::state_check
   std::string inverse_state_check = "1";            //!< see CCode::inverse_state_check
 };

@@ -41,6 +41,8 @@ std::string FmuUnit::unit_name(CUnit unit) const {
       return both ? fmt::format("{}/{}", model_output_unit, model_input_unit) : std::string();
     case CUnit::input_per_output:
       return both ? fmt::format("{}/{}", model_input_unit, model_output_unit) : std::string();
+    case CUnit::seconds:
+      return "s";
     case CUnit::none:
       break;
   }
@@ -124,7 +126,7 @@ std::string fmu_model_description(const FmuUnit& unit) {
 )",
       fmt::arg("id", unit.identifier), fmt::arg("guid", unit.guid),
       fmt::arg("description", io::xml_escaped(description)),
-      fmt::arg("variable", sample_time > 0.0 ? "false" : "true"),
+      fmt::arg("variable", unit.variable_step() ? "true" : "false"),
       fmt::arg("c_source", unit.code->source_name), fmt::arg("wrapper", unit.wrapper_name()),
       fmt::arg("units", unit_definitions),
       fmt::arg("step", sample_time > 0.0 ? fmt::format(" stepSize=\"{}\"", number(sample_time))

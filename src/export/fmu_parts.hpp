@@ -37,6 +37,11 @@ struct FmuUnit {
   //! The FMU's input and output units.
   std::string input_unit() const { return inverse ? model_output_unit : model_input_unit; }
   std::string output_unit() const { return inverse ? model_input_unit : model_output_unit; }
+  //! The step follows the host's communication step: a model (not an inverse) whose C export
+  //! can be discretised at another sample time (CCode::set_sample_time), or one without any.
+  bool variable_step() const {
+    return code->sample_time == 0.0 || (!inverse && !code->set_sample_time.empty());
+  }
   //! The wrapper's file name, "<identifier>_fmi2.c".
   std::string wrapper_name() const { return identifier + "_fmi2.c"; }
 };

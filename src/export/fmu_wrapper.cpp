@@ -42,6 +42,8 @@ constexpr std::string_view kWrapper = R"C(/* %FILE%: the FMI 2.0 co-simulation i
 #define FMU_INVERSE %INVERSE%
 /* The sample time a step assumes [s]; 0: any communication step. */
 #define FMU_SAMPLE_TIME %SAMPLE_TIME%
+/* 1: a model continuous in time, discretised at each communication step the host takes. */
+#define FMU_RESAMPLES %RESAMPLES%
 /* The relative step of the directional derivative's difference quotient. */
 #define FMU_DIFFERENCE_STEP %DIFFERENCE_STEP%
 /* Marks a saved state of this export (a digest of it). */
@@ -101,6 +103,9 @@ typedef struct {
   fmu_state state;   /* after the samples of the earlier communication points */
   fmu_state sample;  /* after the current input's sample, when output_valid */
   fmi2Real parameters[FMU_PARAMETERS + 1u];
+  /* The step the current point's sample is discretised at: the last communication step, the
+     model's sample time before the first (FMU_RESAMPLES). */
+  fmi2Real step;
 } fmu_snapshot;
 
 /* A member of a registry of live objects: the first field of an instance and of a saved state. */
@@ -338,6 +343,8 @@ static const char *fmu_snapshot_problem(const fmu_snapshot *snapshot) {
     return "the state holds no valid mode";
   if (!isfinite(snapshot->time)) return "the state's time is not finite";
   if (!FMU_INVERSE && !isfinite(snapshot->input)) return "the state's input is not finite";
+  if (!isfinite(snapshot->step) || snapshot->step < 0.0 || (FMU_RESAMPLES && !(snapshot->step > 0.0)))
+    return "the state's step is not finite and positive";
   if (snapshot->output_valid != 0 && snapshot->output_valid != 1)
     return "the state's output flag is neither 0 nor 1";
   if (snapshot->output_valid && (!isfinite(snapshot->output) || !fmu_state_valid(&snapshot->sample)))
@@ -351,9 +358,19 @@ static void fmu_start(fmu_instance *fmu) {
   fmu->params = %PARAMS_VALUE%;
   memset(&fmu->now, 0, sizeof fmu->now);
   fmu->now.magic = FMU_STATE_MAGIC;
+  fmu->now.step = FMU_SAMPLE_TIME;
   %INIT%(&fmu->now.state);
   fmu->now.input = %INPUT_START%;
   fmu->now.mode = fmu_instantiated;
+}
+
+/* The model's parameters discretised at the snapshot's step (FMU_RESAMPLES; else nothing). */
+static void fmu_discretise(fmu_instance *fmu) {
+#if FMU_RESAMPLES
+  %SET_SAMPLE_TIME%(&fmu->params, fmu->now.step);
+#else
+  (void)fmu;
+#endif
 }
 
 /* The output for the current input, from the state of the earlier points. */
@@ -460,6 +477,8 @@ FMU_EXPORT fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     return fmu_error(fmu, "fmi2ExitInitializationMode: not in initialisation mode");
   if (!fmu_parameters_valid(fmu, "fmi2ExitInitializationMode", fmu_value_of_params, &fmu->params))
     return fmi2Error;
+  fmu_discretise(fmu); /* the time constants the host set */
+  fmu->now.output_valid = 0;
   fmu->now.mode = fmu_stepping;
   return fmi2OK;
 }
@@ -622,6 +641,7 @@ FMU_EXPORT fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
   memcpy(&fmu->now, &saved->snapshot, sizeof(fmu_snapshot));
   for (k = 0; k < FMU_PARAMETERS; ++k)
     *fmu_parameter(&fmu->params, k) = (@_real)saved->snapshot.parameters[k];
+  fmu_discretise(fmu);
   return fmi2OK;
 }
 
@@ -770,13 +790,18 @@ FMU_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationP
     return fmu_error(fmu, "fmi2DoStep: the step size must be positive and finite");
   if (fabs(t - fmu->now.time) > 1e-9 * (1.0 + fabs(t)))
     return fmu_error(fmu, "fmi2DoStep: the communication point is not the FMU's time");
-  if (FMU_SAMPLE_TIME > 0.0 && fabs(h - FMU_SAMPLE_TIME) > 1e-9 * FMU_SAMPLE_TIME)
+  if (!FMU_RESAMPLES && FMU_SAMPLE_TIME > 0.0 && fabs(h - FMU_SAMPLE_TIME) > 1e-9 * FMU_SAMPLE_TIME)
     return fmu_error(fmu, "fmi2DoStep: the step size must be the model's sample time "
                           "(%SAMPLE_TIME% s)");
   fmu_evaluate(fmu);
   memcpy(&fmu->now.state, &fmu->now.sample, sizeof(fmu_state));
   fmu->now.output_valid = 0;
   fmu->now.time = t + h;
+  /* The next point's sample spans this step: the lags are discretised at it. */
+  if (FMU_RESAMPLES && h != fmu->now.step) {
+    fmu->now.step = h;
+    fmu_discretise(fmu);
+  }
   return fmi2OK;
 }
 
@@ -1021,6 +1046,8 @@ std::string fmu_wrapper(const FmuUnit& unit) {
        {"GUID", unit.guid},
        {"PARAMETERS", std::to_string(parameter_count(unit))},
        {"SAMPLE_TIME", fmt::format("{:.17g}", unit.code->sample_time)},
+       {"RESAMPLES", unit.variable_step() && unit.code->sample_time > 0.0 ? "1" : "0"},
+       {"SET_SAMPLE_TIME", unit.code->set_sample_time},
        {"DIFFERENCE_STEP", unit.single ? "1e-3" : "1e-7"},
        {"DIGEST", fmt::format("{:016x}", unit.digest)},
        {"PARAMS_TYPE", unit.inverse ? "@_inverse_params" : "@_params"},

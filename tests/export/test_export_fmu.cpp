@@ -24,6 +24,7 @@
 #include "hyst/export/export_fmu.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
+#include "hyst/registry/timed_simulation.hpp"
 
 namespace hyst {
 namespace {
@@ -374,8 +375,12 @@ TEST_F(ExportFmuTest, FloatCodeStaysCloseToTheLibrary) {
 
 TEST_F(ExportFmuTest, ImporterMistakesAreRefusedWithAReason) {
   const auto model = model_from_json(example_document("pi_creep"), "test.json");
-  const auto fmu = open(export_fmus(*model, false, CScalar::double_precision).model);
-  EXPECT_EQ(fmu->capability("canHandleVariableCommunicationStepSize"), "false");
+  const auto files = export_fmus(*model, true, CScalar::double_precision);
+  const auto fmu = open(files.model);
+  // The model steps at the host's communication step; its inverse at the exported one only.
+  EXPECT_EQ(fmu->capability("canHandleVariableCommunicationStepSize"), "true");
+  const auto inverse = open(files.inverse);
+  EXPECT_EQ(inverse->capability("canHandleVariableCommunicationStepSize"), "false");
   const double h = step_of(*fmu);
   EXPECT_EQ(h, ModelRegistry::builtin().find("pi_creep").example_params.at("sample_time"));
   EXPECT_THROW(FmuInstance(*fmu, "{00000000-0000-0000-0000-000000000000}"), std::runtime_error);
@@ -384,13 +389,47 @@ TEST_F(ExportFmuTest, ImporterMistakesAreRefusedWithAReason) {
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("GUID"), std::string::npos) << error.what();
   }
+  FmuInstance compensator(*inverse);
+  const auto& g = compensator.call();
+  EXPECT_EQ(g.do_step(compensator.component(), 0.0, 1.5 * h, 0), fmi2::Error);
+  EXPECT_NE(compensator.log().find("sample time"), std::string::npos) << compensator.log();
   FmuInstance instance(*fmu);
   const auto& f = instance.call();
-  EXPECT_EQ(f.do_step(instance.component(), 0.0, 1.5 * h, 0), fmi2::Error);
-  EXPECT_NE(instance.log().find("sample time"), std::string::npos) << instance.log();
   EXPECT_EQ(f.do_step(instance.component(), 5.0, h, 0), fmi2::Error);
   EXPECT_NE(instance.log().find("communication point"), std::string::npos) << instance.log();
   EXPECT_EQ(f.do_step(instance.component(), 0.0, h, 0), fmi2::OK);
+}
+
+// The creep model's FMU at a host step 7 times the fitted one, and at steps that change: the
+// library's model on the same time axis (re-discretised, simulate_on_time_axis), to rounding.
+// The first point's sample spans the model's own sample time: the host's step is not known
+// before the first fmi2DoStep.
+TEST_F(ExportFmuTest, TheCreepModelStepsAtTheHostsCommunicationStep) {
+  for (const char* name : {"pi_creep", "modified_pi_creep"}) {
+    const auto model = model_from_json(example_document(name), "test.json");
+    const auto fmu = open(export_fmus(*model, false, CScalar::double_precision).model);
+    const double ts = *model->sample_time();
+    const auto input = test::seeded_input(11, -2.0, 2.0, 400, 0.0);
+    for (const double factor : {7.0, 0.25}) {
+      data::TimeAxis axis{ts * factor, std::vector<double>(input.size(), ts * factor)};
+      axis.steps[0] = ts;
+      std::unique_ptr<DynamicModel> timed = model->clone();
+      std::vector<double> expected(input.size());
+      simulate_on_time_axis(timed, axis, input, expected);
+      FmuInstance instance(*fmu);
+      double worst = 0.0;
+      for (std::size_t k = 0; k < input.size(); ++k)
+        worst = std::max(worst, std::abs(instance.sample(input[k], ts * factor) - expected[k]));
+      EXPECT_LE(worst, 1e-12) << name << " at " << factor << " Ts";
+      // Not the same as the model at its own sample time: the step matters.
+      std::vector<double> untimed(input.size());
+      model->clone()->simulate(input, untimed);
+      double apart = 0.0;
+      for (std::size_t k = 0; k < input.size(); ++k)
+        apart = std::max(apart, std::abs(untimed[k] - expected[k]));
+      EXPECT_GT(apart, 1e-3) << name;
+    }
+  }
 }
 
 TEST_F(ExportFmuTest, SourcesBuildWithoutWarningsAndOnlyTheInterfaceIsExported) {

@@ -32,6 +32,7 @@ enum class CUnit : unsigned char {
   output,            //!< [output units]
   output_per_input,  //!< [output units / input units]
   input_per_output,  //!< [input units / output units]
+  seconds,           //!< [s]
 };
 
 //! What a wrapper that lets a user change an exported parameter (an FMU) checks before using it:
@@ -77,6 +78,12 @@ struct CCode {
   //! The sample time [s] a step assumes (the creep models' lags); 0 for a rate-independent model,
   //! whose step may follow any sample spacing.
   double sample_time = 0.0;
+  //! The C function `void f(<prefix>_params *params, double sample_time)` that discretises the
+  //! model's parameters at another sample time (the creep models: the lags' decays from their
+  //! time constants), so that a host may step at its own rate; empty when the model's step holds
+  //! at `sample_time` only (or at any spacing, for a rate-independent model). The inverse keeps
+  //! the exported sample time.
+  std::string set_sample_time;
   //! A C expression, true when the state `s` (a `const <prefix>_state *`) is one the step can
   //! take: finite values, a memory within its bounds. A wrapper checks a restored state with it.
   std::string state_check = "1";
