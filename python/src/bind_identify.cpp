@@ -79,6 +79,24 @@ void bind_identify(py::module_& module) {
       .def_readonly("longest_hold_samples", &FittedDomain::longest_hold_samples,
                     "the most consecutive samples without a reversal of the input")
       .def_readonly("sample_time", &FittedDomain::sample_time, "[s], or None")
+      .def_readonly("largest_time_constant", &FittedDomain::largest_time_constant,
+                    "[s] of a model with lags (creep), or None")
+      .def_property_readonly("duration", &FittedDomain::duration, "[s], or None")
+      .def_property_readonly("largest_input_rate", &FittedDomain::largest_input_rate,
+                             "[input units / s], or None")
+      .def_property_readonly("longest_hold", &FittedDomain::longest_hold,
+                             "[s] without a reversal of the input, or None")
+      .def(
+          "check_timing",
+          [](const FittedDomain& d, const InputArray& input, std::optional<double> sample_time) {
+            const auto values = as_span(input, "input");
+            const auto check = check_timing(d, values, sample_time);
+            return std::make_pair(check.inside(), check.message(values.size()));
+          },
+          "input"_a, "sample_time"_a = py::none(),
+          "(inside, message) of the input's rates and holds at `sample_time` [s] (None: the "
+          "model's own): rates above the fitted largest by more than 5 %, holds longer than the "
+          "largest time constant.")
       .def(
           "check_inputs",
           [](const FittedDomain& d, const InputArray& input) {

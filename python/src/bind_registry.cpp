@@ -17,7 +17,9 @@
 #include "hyst/data/sample_time.hpp"
 #include "hyst/export/export_c.hpp"
 #include "hyst/export/export_fmu.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/registry/dynamic_model.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/record_score.hpp"
@@ -371,7 +373,8 @@ void bind_registry(py::module_& module) {
       "evaluate",
       [](const DynamicModel& m, const InputArray& input, const InputArray& output,
          std::string_view validation_start, std::string_view validation_align,
-         std::optional<double> sample_time, const std::optional<InputArray>& time) -> StrDict {
+         std::optional<double> sample_time, const std::optional<InputArray>& time,
+         const std::optional<FittedDomain>& domain) -> StrDict {
         const auto u = as_vector(input, "input");
         const auto y = as_vector(output, "output");
         const auto rule = saved_model_rule(validation_start, validation_align, "hyst.evaluate");
@@ -404,11 +407,22 @@ void bind_registry(py::module_& module) {
         out["yardsticks_on_this_record"] = yardsticks;
         out["time_dependence"] = std::string(to_string(timed->time_dependence()));
         out["sample_time"] = timed->sample_time();
+        if (domain) {
+          auto check = check_inputs(*domain, u);
+          const auto timing =
+              check_timing(*domain, u, axis ? std::optional(axis->sample_time) : std::nullopt);
+          check.excursions.insert(check.excursions.end(), timing.excursions.begin(),
+                                  timing.excursions.end());
+          out["domain"] =
+              py::dict("inside"_a = check.inside(), "message"_a = check.message(u.size()));
+        } else {
+          out["domain"] = py::none();
+        }
         return out;
       },
       "model"_a, "input"_a, "output"_a, "validation_start"_a = "rest",
       "validation_align"_a = "none", py::kw_only(), "sample_time"_a = py::none(),
-      "time"_a = py::none(),
+      "time"_a = py::none(), "domain"_a = py::none(),
       "A single-input Model scored on a measured record as `hyst evaluate --model m.json --data "
       "r.csv` and `hyst fit --validation-data` score it: predicted from validation_start "
       "('rest', 'periodic' or 'file': the model's start state), aligned by validation_align "
@@ -416,7 +430,13 @@ void bind_registry(py::module_& module) {
       "max_error, samples, the prediction and yardsticks_on_this_record (its mean and a static "
       "cubic y(v), fitted on this record), and the model's time_dependence and the sample_time "
       "it ran at. sample_time [s] or time (the samples' times [s]) give the record's time axis, "
-      "as for Model.simulate (a model with time in it needs a uniform one here).");
+      "as for Model.simulate (a model with time in it needs a uniform one here). domain (a "
+      "FittedDomain: FitReport.domain, hyst.load_fitted_domain(path)) adds 'domain': {'inside', "
+      "'message'} on the record's inputs, rates and holds (else None), as the CLI's warning.");
+  module.def(
+      "load_fitted_domain",
+      [](const std::filesystem::path& path) { return load_fitted_domain(path); }, "path"_a,
+      "The FittedDomain of a model file (its info.domain, written by hyst fit), or None.");
   module.def(
       "model_from_dict",
       [](const py::handle& document, std::string_view source) {

@@ -96,3 +96,32 @@ def test_a_narx_runs_at_its_own_sample_time_only():
         narx.simulate(v, sample_time=0.1)
     with pytest.raises(hyst.Error, match="sample_time or time, not both"):
         narx.simulate(v, sample_time=0.01, time=0.01 * np.arange(v.size))
+
+
+def test_the_fitted_domain_knows_rates_holds_and_the_slowest_lag(tmp_path):
+    creep = hyst.Model("pi_creep", CREEP)
+    v = staircase(50)
+    times = 0.01 * np.arange(v.size)
+    fitted = hyst.fit("pi_creep", v, creep.simulate(v), time=times, time_constants=[0.05, 0.3])
+    domain = fitted.report.domain
+    assert domain.largest_time_constant == pytest.approx(0.3)
+    assert domain.duration == pytest.approx(6.0)
+    assert domain.largest_input_rate == pytest.approx(300.0)   # 1.5 to -1.5 in 10 ms
+    assert domain.longest_hold == pytest.approx(2.0)            # 3 steps up and a level: 2 s
+    inside, message = domain.check_timing(v)
+    assert inside and message == ""
+    long_holds = staircase(400)                                  # levels of 4 s
+    inside, message = domain.check_timing(long_holds, sample_time=0.01)
+    assert not inside and "longer than the longest fitted one (2 s)" in message
+    path = tmp_path / "creep.json"
+    hyst.save_model(path, fitted.model)
+    assert hyst.load_fitted_domain(path) is None   # no info.domain
+    hyst.save_model(path, fitted.model, {"domain": {
+        "input_min": -1.5, "input_max": 1.5, "output_min": -3.0, "output_max": 3.0,
+        "samples": 600, "largest_input_step": 1.0, "longest_hold_samples": 200,
+        "sample_time": 0.01, "largest_time_constant": 0.3}})
+    read = hyst.load_fitted_domain(path)
+    assert read.longest_hold == pytest.approx(2.0) and read.largest_time_constant == 0.3
+    result = hyst.evaluate(fitted.model, long_holds, creep.simulate(long_holds), domain=domain)
+    assert result["domain"]["inside"] is False and "holds" in result["domain"]["message"]
+    assert hyst.evaluate(fitted.model, v, creep.simulate(v))["domain"] is None

@@ -130,8 +130,19 @@ std::string FitReport::full() const {
                      domain->samples,
                      domain->sample_time ? fmt::format(" at {:.6g} s", *domain->sample_time)
                                          : std::string()));
-    line("", fmt::format("largest input step {:.6g}, longest run without a reversal {} samples",
-                         domain->largest_input_step, domain->longest_hold_samples));
+    if (domain->sample_time) {
+      line("", fmt::format(
+                   "duration {:.6g} s, largest input rate {:.6g} per s, longest hold "
+                   "(run without a reversal) {:.6g} s{}",
+                   *domain->duration(), *domain->largest_input_rate(), *domain->longest_hold(),
+                   domain->largest_time_constant ? fmt::format(", largest time constant {:.6g} s",
+                                                               *domain->largest_time_constant)
+                                                 : std::string()));
+    } else {
+      line("", fmt::format("largest input step {:.6g}, longest run without a reversal {} samples "
+                           "(no sample time: a rate-independent model)",
+                           domain->largest_input_step, domain->longest_hold_samples));
+    }
   }
   text += "\n";
   text += fmt::format("  {:<12}{:>10}{:>14}{:>12}{:>14}\n", "part", "samples", "RMSE", "NRMSE [%]",

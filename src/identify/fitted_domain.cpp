@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/checks.hpp"
+#include "hyst/core/error.hpp"
 
 namespace hyst {
 namespace {
@@ -13,10 +14,12 @@ namespace {
 // The samples of `values` beyond [low, high] widened by kDomainMargin of its width (NaN too).
 DomainCheck beyond(std::span<const double> values, double low, double high, std::string_view what) {
   const double margin = kDomainMargin * (high - low);
-  DomainExcursion below{fmt::format("{} below the fitted range [{:.6g}, {:.6g}]", what, low, high),
-                        0, 0};
-  DomainExcursion above{fmt::format("{} above the fitted range [{:.6g}, {:.6g}]", what, low, high),
-                        0, 0};
+  const auto side_text = [&](std::string_view side) {
+    return fmt::format("{} {} the fitted range [{:.6g}, {:.6g}] by more than {:g} % of its width",
+                       what, side, low, high, 100.0 * kDomainMargin);
+  };
+  DomainExcursion below{side_text("below"), 0, 0};
+  DomainExcursion above{side_text("above"), 0, 0};
   for (std::size_t k = 0; k < values.size(); ++k) {
     const double v = values[k];
     if (v >= low - margin && v <= high + margin) continue;
@@ -59,14 +62,70 @@ FittedDomain fitted_domain(std::span<const double> input, std::span<const double
   return domain;
 }
 
+std::optional<double> FittedDomain::duration() const {
+  if (!sample_time) return std::nullopt;
+  return static_cast<double>(samples) * *sample_time;
+}
+
+std::optional<double> FittedDomain::largest_input_rate() const {
+  if (!sample_time) return std::nullopt;
+  return largest_input_step / *sample_time;
+}
+
+std::optional<double> FittedDomain::longest_hold() const {
+  if (!sample_time) return std::nullopt;
+  return static_cast<double>(longest_hold_samples) * *sample_time;
+}
+
+DomainCheck check_timing(const FittedDomain& domain, std::span<const double> input,
+                         std::optional<double> sample_time, std::span<const double> steps) {
+  DomainCheck check;
+  if (!domain.sample_time) return check;
+  const double uniform_step = sample_time.value_or(*domain.sample_time);
+  if (!steps.empty() && steps.size() != input.size())
+    throw Error(fmt::format("check_timing: {} steps for {} inputs", steps.size(), input.size()));
+  const double fastest = domain.largest_input_step / *domain.sample_time;
+  DomainExcursion rates{
+      fmt::format("input rates above the fitted largest {:.6g} per s by more than {:g} %", fastest,
+                  100.0 * kDomainMargin),
+      0, 0};
+  // A hold as long as the fit record's own was seen, whatever the lags; beyond both it and the
+  // slowest lag, the creep that follows is what no fit record showed.
+  DomainExcursion holds;
+  std::optional<double> hold_limit;
+  if (domain.largest_time_constant) {
+    hold_limit = std::max(*domain.largest_time_constant, *domain.longest_hold());
+    holds.what = fmt::format(
+        "holds (time without a reversal) longer than the longest fitted one ({:.6g} s) and the "
+        "largest time constant ({:.6g} s)",
+        *domain.longest_hold(), *domain.largest_time_constant);
+  }
+  int direction = 0;
+  double held = 0.0;  // [s] since the last reversal
+  for (std::size_t k = 1; k < input.size(); ++k) {
+    const double step = steps.empty() ? uniform_step : steps[k];
+    const double change = input[k] - input[k - 1];
+    if (std::abs(change) / step > fastest * (1.0 + kDomainMargin)) {
+      if (rates.samples++ == 0) rates.first = k;
+    }
+    const int now = change > 0.0 ? 1 : change < 0.0 ? -1 : direction;
+    // As fitted_domain() counts a run: the reversal's sample and this one begin a new one.
+    held = now != direction && direction != 0 ? 2.0 * step : (k == 1 ? 2.0 * step : held + step);
+    direction = now;
+    if (hold_limit && held > *hold_limit * (1.0 + kDomainMargin)) {
+      if (holds.samples++ == 0) holds.first = k;
+    }
+  }
+  if (rates.samples > 0) check.excursions.push_back(std::move(rates));
+  if (holds.samples > 0) check.excursions.push_back(std::move(holds));
+  return check;
+}
+
 std::string DomainCheck::message(std::size_t record_samples) const {
   std::string text;
   for (const auto& e : excursions)
-    text += fmt::format(
-        "{}{} of {} samples: {} by more than {:g} % of its width (first at sample "
-        "{})",
-        text.empty() ? "" : "; ", e.samples, record_samples, e.what, 100.0 * kDomainMargin,
-        e.first);
+    text += fmt::format("{}{} of {} samples: {} (first at sample {})", text.empty() ? "" : "; ",
+                        e.samples, record_samples, e.what, e.first);
   return text;
 }
 

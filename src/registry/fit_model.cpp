@@ -2,6 +2,7 @@
 // judgement of every fit that follows it: the simulation's quality (identify/fit_quality.hpp) and
 // the yardstick of reference predictors (identify/reference_predictors.hpp).
 
+#include <algorithm>
 #include <exception>
 #include <optional>
 #include <span>
@@ -89,20 +90,35 @@ void judge_fit(FitOutcome& outcome, const FittedRecords& records, const FitReque
   }
 }
 
+// The largest of the model's time constants [s] (the creep models' lags), if it has any.
+std::optional<double> largest_time_constant(const DynamicModel& model) {
+  const auto params = model.params();
+  const auto found = params.find("time_constants");
+  if (found == params.end() || !found->is_array() || found->empty()) return std::nullopt;
+  double largest = 0.0;
+  for (const auto& tau : *found)
+    largest = std::max(largest, tau.get<double>());
+  return largest;
+}
+
 // The domain of the samples the model was fitted on: the record without its held-out end, at
-// the sample time of the fit options when they have one.
+// the sample time of the fitted model when it has one (else of the fit options).
 FittedDomain domain_of_fit_part(std::span<const double> input, std::span<const double> output,
-                                const FitRequest& request) {
-  std::optional<double> sample_time;
+                                const FitRequest& request, const DynamicModel& model) {
+  std::optional<double> sample_time = model.sample_time();
   if (const auto it = request.options.find("sample_time");
-      it != request.options.end() && it->is_number())
+      !sample_time && it != request.options.end() && it->is_number())
     sample_time = it->get<double>();
+  FittedDomain domain;
   if (request.validate_fraction > 0.0 && request.validation_input.empty()) {
     const auto split = split_by_fraction(input.size(), request.validate_fraction);
-    return fitted_domain(input.subspan(split.fit_begin, split.fit_size()),
-                         output.subspan(split.fit_begin, split.fit_size()), sample_time);
+    domain = fitted_domain(input.subspan(split.fit_begin, split.fit_size()),
+                           output.subspan(split.fit_begin, split.fit_size()), sample_time);
+  } else {
+    domain = fitted_domain(input, output, sample_time);
   }
-  return fitted_domain(input, output, sample_time);
+  domain.largest_time_constant = largest_time_constant(model);
+  return domain;
 }
 
 }  // namespace
@@ -163,7 +179,7 @@ FitOutcome fit_model(const ModelEntry& entry, const FitRequest& request) {
                     100.0 * request.validate_fraction);
   }
   judge_fit(outcome, {fit_input, fit_output, validation_input, validation_output}, request);
-  outcome.report.domain = domain_of_fit_part(fit_input, fit_output, request);
+  outcome.report.domain = domain_of_fit_part(fit_input, fit_output, request, *outcome.model);
   return outcome;
 }
 

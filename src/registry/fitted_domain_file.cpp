@@ -17,7 +17,13 @@ nlohmann::json fitted_domain_json(const FittedDomain& domain) {
                          {"samples", domain.samples},
                          {"largest_input_step", domain.largest_input_step},
                          {"longest_hold_samples", domain.longest_hold_samples}};
-  if (domain.sample_time) json["sample_time"] = *domain.sample_time;
+  if (domain.sample_time) {
+    json["sample_time"] = *domain.sample_time;
+    json["duration"] = *domain.duration();
+    json["largest_input_rate"] = *domain.largest_input_rate();
+    json["longest_hold"] = *domain.longest_hold();
+  }
+  if (domain.largest_time_constant) json["largest_time_constant"] = *domain.largest_time_constant;
   return json;
 }
 
@@ -37,6 +43,11 @@ std::optional<FittedDomain> fitted_domain_of(const nlohmann::json& document,
     domain.largest_input_step = fields.number("largest_input_step");
     domain.longest_hold_samples = fields.count("longest_hold_samples");
     if (fields.has("sample_time")) domain.sample_time = fields.number("sample_time");
+    if (fields.has("largest_time_constant"))
+      domain.largest_time_constant = fields.number("largest_time_constant");
+    // Derived from the fields above, written for people and scripts.
+    for (const char* derived : {"duration", "largest_input_rate", "longest_hold"})
+      if (fields.has(derived)) static_cast<void>(fields.number(derived));
     fields.finish();
     if (!(domain.input_min <= domain.input_max) || !(domain.output_min <= domain.output_max))
       throw Error("info.domain: a minimum above its maximum");

@@ -61,6 +61,44 @@ TEST(FittedDomain, SamplesBeyondFivePercentOfTheWidthLeaveIt) {
   EXPECT_EQ(targets.excursions[0].first, 1u);
 }
 
+TEST(FittedDomain, RatesAndHoldsAtTheRecordsSampleTime) {
+  // Fitted at 0.01 s: largest step 4 (400 per s), longest hold 5 samples (0.05 s), lags up to
+  // 0.02 s: holds count beyond max(0.05, 0.02) s plus 5 %.
+  const std::vector<double> fit_input{0, 1, 2, 1, 1, 0, -1, 3};
+  auto domain = fitted_domain(fit_input, fit_input, 0.01);
+  domain.largest_time_constant = 0.02;
+  EXPECT_DOUBLE_EQ(*domain.duration(), 0.08);
+  EXPECT_DOUBLE_EQ(*domain.largest_input_rate(), 400.0);
+  EXPECT_DOUBLE_EQ(*domain.longest_hold(), 0.05);
+  // The fit record itself stays inside.
+  EXPECT_TRUE(check_timing(domain, fit_input, 0.01).inside());
+  // The same steps 10 times faster (0.001 s): rates of up to 4000 per s, above 400 from the
+  // first step (1 / 0.001 = 1000 per s at sample 1).
+  const auto fast = check_timing(domain, fit_input, 0.001);
+  ASSERT_EQ(fast.excursions.size(), 1u);
+  EXPECT_EQ(fast.excursions[0].first, 1u);
+  EXPECT_EQ(fast.excursions[0].samples, 6u);  // every step but the one of 0
+  EXPECT_NE(fast.excursions[0].what.find("input rates above the fitted largest 400 per s"),
+            std::string::npos);
+  // A ramp of 10 samples at 0.01 s (0.1 s without a reversal, steps of 0.1): from sample 5 on
+  // the run has lasted 6 x 0.01 = 0.06 s > 0.05 x 1.05.
+  std::vector<double> ramp;
+  for (int k = 0; k < 10; ++k)
+    ramp.push_back(0.1 * k);
+  const auto long_hold = check_timing(domain, ramp, 0.01);
+  ASSERT_EQ(long_hold.excursions.size(), 1u);
+  EXPECT_EQ(long_hold.excursions[0].first, 5u);
+  EXPECT_EQ(long_hold.excursions[0].samples, 5u);
+  EXPECT_NE(long_hold.excursions[0].what.find("longer than the longest fitted one (0.05 s)"),
+            std::string::npos);
+  // Non-uniform steps: the same ramp with steps of 0.005 s lasts 0.05 s in all: inside.
+  const std::vector<double> half(10, 0.005);
+  EXPECT_TRUE(check_timing(domain, ramp, std::nullopt, half).inside());
+  // A rate-independent model's domain (no sample time) is never checked for timing.
+  EXPECT_TRUE(check_timing(fitted_domain(fit_input, fit_input), ramp, 1e-9).inside());
+  EXPECT_HYST_ERROR(check_timing(domain, ramp, 0.01, std::vector<double>(3, 0.01)), "steps");
+}
+
 TEST(FittedDomain, RoundTripsThroughAModelFileAndIsRefusedWhenMalformed) {
   const auto domain = fitted_domain(std::vector<double>{0, 2, 1}, std::vector<double>{1, 3, 2});
   const nlohmann::json document = {{"info", {{"domain", fitted_domain_json(domain)}}}};

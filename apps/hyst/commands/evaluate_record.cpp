@@ -67,7 +67,7 @@ void evaluate_record(const RecordEvaluation& options) {
   }
   const auto unit = source.unit(options.output);
   const auto domain = load_fitted_domain(options.model);
-  const DomainCheck domain_check = domain ? check_inputs(*domain, record.input) : DomainCheck{};
+  const DomainCheck domain_check = check_record_inputs(domain, record.input, time);
   report_domain(domain_check, record.input.size(), options.model,
                 fmt::format("{} --input '{}'", options.data, options.input), options.strict);
 

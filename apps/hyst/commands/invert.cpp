@@ -74,13 +74,20 @@ void run(const InvertOptions& options) {
 
   // Targets beyond every output the fit measured: checked now, said after the output is written.
   const auto domain = load_fitted_domain(options.model);
-  const DomainCheck domain_check = domain ? check_targets(*domain, target) : DomainCheck{};
+  DomainCheck domain_check = domain ? check_targets(*domain, target) : DomainCheck{};
   std::vector<double> input(target.size());
   InverseReport report;
   try {
     report = inverse->invert(target, input);
   } catch (const Error& error) {
     throw Error(fmt::format("{} column '{}': {}", source.path().string(), column, error.what()));
+  }
+  // The inputs the inverse asks for: rates and holds beyond the fitted ones.
+  if (domain) {
+    const auto timing = time ? check_timing(*domain, input, time->axis.sample_time)
+                             : check_timing(*domain, input, std::nullopt);
+    domain_check.excursions.insert(domain_check.excursions.end(), timing.excursions.begin(),
+                                   timing.excursions.end());
   }
 
   io::Table table;

@@ -10,9 +10,11 @@
 #include <fmt/format.h>
 
 #include "../data_source.hpp"
+#include "../domain_warning.hpp"
 #include "../record_time.hpp"
 #include "commands.hpp"
 #include "hyst/plot/gnuplot.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 #include "hyst/registry/validation_rule.hpp"
 
@@ -115,6 +117,8 @@ void run(const PlotOptions& options) {
     } catch (const Error& error) {
       throw Error(fmt::format("{} column '{}': {}", options.data, input_name, error.what()));
     }
+    report_domain(check_record_inputs(load_fitted_domain(options.model), input, time), input.size(),
+                  options.model, fmt::format("{} column '{}'", options.data, input_name), false);
     plot::Series simulated{.label = fmt::format("model ({}, {})", model->name(), options.model)};
     if (loop) {
       simulated.x = input;

@@ -47,7 +47,7 @@ void run(const SimulateOptions& options) {
   model = model_for_record(std::move(model), time, "hyst simulate", true);
   // Inputs beyond those the model was fitted on: checked now, said after the output is written.
   const auto domain = load_fitted_domain(options.model);
-  const DomainCheck domain_check = domain ? check_inputs(*domain, input) : DomainCheck{};
+  const DomainCheck domain_check = check_record_inputs(domain, input, time);
   std::vector<double> output(input.size());
   try {
     simulate_record(model, time, input, output);

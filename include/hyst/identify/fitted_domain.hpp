@@ -9,8 +9,10 @@
 //! A sample leaves the domain when it lies beyond the fitted range by more than
 //! kDomainMargin of the range's width (input samples for a model, targets for an inverse).
 //! The longest hold (the most consecutive samples without a reversal of the input's direction)
-//! and the largest input step per sample are recorded for reports; a rate or a hold only
-//! compares between records of one sample time, which the check takes from the fit.
+//! and the largest input step per sample are recorded too; with the sample time they are a
+//! duration and a rate, which check_timing() compares with another record's: rates beyond the
+//! fitted ones, and holds longer than the largest time constant of a model with lags (creep),
+//! whose behaviour beyond it no fit record has shown.
 
 #include <cstddef>
 #include <optional>
@@ -35,6 +37,15 @@ struct FittedDomain {
   //! The most consecutive samples without a reversal of the input's direction.
   std::size_t longest_hold_samples = 0;
   std::optional<double> sample_time;  //!< [s], when the fit knew it
+  //! The largest time constant [s] of a model with lags (the creep models), else none.
+  std::optional<double> largest_time_constant;
+
+  //! The fit part's duration [s], samples x sample time, when the sample time is known.
+  std::optional<double> duration() const;
+  //! The largest |v[k] - v[k-1]| / Ts [input units / s], when the sample time is known.
+  std::optional<double> largest_input_rate() const;
+  //! The longest hold [s], when the sample time is known.
+  std::optional<double> longest_hold() const;
 };
 
 //! The domain of a fit part. hyst::Error for records that differ in length or are empty.
@@ -43,7 +54,8 @@ FittedDomain fitted_domain(std::span<const double> input, std::span<const double
 
 //! Samples of a record that leave one side of the domain, and the first of them (from 0).
 struct DomainExcursion {
-  std::string what;  //!< "inputs beyond the fitted input range [-1, 1]"
+  //! "inputs above the fitted range [-1, 1] by more than 5 % of its width"
+  std::string what;
   std::size_t samples = 0;
   std::size_t first = 0;
 };
@@ -59,6 +71,17 @@ struct DomainCheck {
 
 //! The input samples of a record that a model fitted on `domain` extrapolates to.
 DomainCheck check_inputs(const FittedDomain& domain, std::span<const double> input);
+
+//! The rates and holds of a record sampled at `sample_time` [s] (none: at the model's own) that
+//! the fit never saw: input rates above the fitted largest by more than kDomainMargin of it (per
+//! second; per sample when the record has no sample time), and samples of a hold (time without
+//! a reversal) that has lasted longer than both the longest fitted hold and the largest time
+//! constant (by more than kDomainMargin). Nothing for a domain without a sample time (a
+//! rate-independent model, for which neither matters).
+//! `steps`, when not empty, are the record's own steps (one per sample, steps[k] = t[k] - t[k-1],
+//! a non-uniform record) and take the place of `sample_time`.
+DomainCheck check_timing(const FittedDomain& domain, std::span<const double> input,
+                         std::optional<double> sample_time, std::span<const double> steps = {});
 
 //! The targets of an inverse that lie beyond every output the fit measured.
 DomainCheck check_targets(const FittedDomain& domain, std::span<const double> targets);
