@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -589,7 +590,37 @@ struct Training {
   Narx::State monitor_start;
   std::span<const double> monitor_input;
   std::span<const double> monitor_output;
+  // The whole fit part (training and monitor rows), which every run must follow in free run.
+  std::span<const double> fit_input;
+  std::span<const double> fit_output;
 };
+
+// A free run that has left the measured output range by more than this many of its widths has
+// run away: it describes nothing the record holds (free_run_check.hpp's rule for the dynamics).
+constexpr double kNarxRunawayWidths = 10.0;
+// How much stronger the ridge of the second attempt is when every start ran away.
+constexpr double kStableRidgeFactor = 1e3;
+
+// The first sample at which the NARX of `shape` with `weights`, run free from rest at the first
+// sample of `input`, leaves the range of `output` by more than kNarxRunawayWidths widths (or is
+// not finite); none when it stays.
+std::optional<std::size_t> free_run_exit(const Narx::Params& shape,
+                                         const std::vector<double>& weights,
+                                         std::span<const double> input,
+                                         std::span<const double> output) {
+  Narx::Params params = shape;
+  params.weights = weights;
+  const Narx model(params);
+  auto state = model.state_at_rest(input.front(), output.front());
+  std::vector<double> simulated(input.size());
+  simulate(model, state, input, simulated);
+  const auto [low, high] = std::minmax_element(output.begin(), output.end());
+  const double margin = kNarxRunawayWidths * (*high - *low);
+  for (std::size_t k = 0; k < simulated.size(); ++k) {
+    if (!(simulated[k] >= *low - margin && simulated[k] <= *high + margin)) return k;
+  }
+  return std::nullopt;
+}
 
 // One training run from the initial weights of one seed (a start of the multistart engine,
 // multistart_driver.hpp): the one-step stage, then the simulation-error stage, each with early
@@ -608,7 +639,8 @@ struct NarxRun {
   // The engine's ranking: the free-run error on the monitor part when there is one, else the
   // final cost of the last stage; every run is usable (a diverging model is reported later).
   double cost = 0.0;
-  bool usable = true;
+  bool usable = true;  // false: it runs away in free run on the fit part
+  std::optional<std::size_t> runaway_sample;
   bool finished = true;
   std::size_t iterations = 0;
 };
@@ -663,6 +695,8 @@ NarxRun train(const Training& t, std::uint64_t seed, std::size_t max_iterations)
                    (run.simulation_stage && !run.simulation.iterations.empty()
                         ? run.simulation.iterations.size() - 1
                         : 0);
+  run.runaway_sample = free_run_exit(t.shape, weights, t.fit_input, t.fit_output);
+  run.usable = !run.runaway_sample;
   run.weights = std::move(weights);
   return run;
 }
@@ -728,21 +762,47 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   }
   const Rows rows =
       one_step_rows(shape_model, input.first(train_end), output.first(train_end), warmup);
-  Training training{shape, shape_model.regressor_count(), rows, options, {}, {}, {}};
+  Training training{shape, shape_model.regressor_count(), rows, options, {}, {}, {}, input, output};
   if (monitor > 0) {
     training.monitor_start =
         shape_model.state_after(input.first(train_end), output.first(train_end));
     training.monitor_input = input.subspan(train_end);
     training.monitor_output = output.subspan(train_end);
   }
-  const auto runs = detail::run_multistart(
-      options.starts,
-      {.screen = false, .max_iterations = options.max_iterations, .progress = options.progress},
-      [&](std::size_t s, std::size_t iterations) {
-        return train(training, options.seed + s, iterations);
-      },
-      [](const NarxRun& run, std::size_t) { return run; });
-  const NarxRun& best = runs.best;
+  // Every start is checked in free run on the fit part; when all of them run away, the starts
+  // are trained again with a ridge kStableRidgeFactor times stronger (a smaller network gain).
+  std::optional<NarxRun> first_unstable;
+  std::size_t unstable_starts = 0;
+  const auto train_all = [&](const NarxFitOptions& chosen) {
+    const Training attempt{
+        training.shape,         training.regressors,    training.rows,           chosen,
+        training.monitor_start, training.monitor_input, training.monitor_output, training.fit_input,
+        training.fit_output};
+    return detail::run_multistart(
+        chosen.starts,
+        {.screen = false, .max_iterations = chosen.max_iterations, .progress = chosen.progress},
+        [&](std::size_t s, std::size_t iterations) {
+          auto run = train(attempt, chosen.seed + s, iterations);
+          if (!run.usable) {
+            ++unstable_starts;
+            if (!first_unstable) first_unstable = run;
+          }
+          return run;
+        },
+        [](const NarxRun& run, std::size_t) { return run; });
+  };
+  auto runs = train_all(options);
+  NarxFitOptions stronger = options;
+  const bool retried = !runs.found;
+  if (retried) {
+    stronger.regularization =
+        options.regularization > 0.0 ? options.regularization * kStableRidgeFactor : 1e-3;
+    // The progress told has ended (done == total); the second attempt runs untold.
+    stronger.progress = {};
+    runs = train_all(stronger);
+  }
+  const bool stable = runs.found;
+  const NarxRun& best = stable ? runs.best : *first_unstable;
 
   shape.weights = best.weights;
   NarxFit result{Narx(shape), {}, {}, {}, {}, 0, 1};
@@ -751,10 +811,25 @@ NarxFit fit_parts(std::span<const double> input, std::span<const double> output,
   const bool finite = add_free_run_errors(result, input, output, validation_input,
                                           validation_output, continue_into_validation);
   const auto diverged = result.report;
-  report_run(result, best, rows, shape, options);
+  report_run(result, best, rows, shape, retried && stable ? stronger : options);
   if (!finite) {
     result.report.termination = diverged.termination;
     result.report.message = diverged.message;
+  }
+  if (!stable) {
+    const auto [low, high] = std::minmax_element(output.begin(), output.end());
+    result.report.termination = Termination::failed;
+    result.report.message = fmt::format(
+        "unstable in free run: each of the {} trained starts (regularization {:g}, then {:g}) "
+        "runs away on the fit part; the first left the output range [{:.6g}, {:.6g}] by more "
+        "than {:g} widths at sample {} (try fewer output lags, a smaller network or more "
+        "simulation_iterations)",
+        unstable_starts, options.regularization, stronger.regularization, *low, *high,
+        kNarxRunawayWidths, *first_unstable->runaway_sample);
+  } else if (retried) {
+    result.report.message +=
+        fmt::format("; every start ran away in free run at regularization {:g}: refitted at {:g}",
+                    options.regularization, stronger.regularization);
   }
   result.report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -96,12 +96,9 @@ void simulate_on_time_axis(std::unique_ptr<DynamicModel>& model, const data::Tim
 std::string untimed_record_note(const DynamicModel& model) {
   if (model.time_dependence() == TimeDependence::none) return {};
   const std::optional<double> own = model.sample_time();
-  if (!own) {
-    return fmt::format(
-        "model '{}' is {} without a stated sample time: the record is run sample "
-        "by sample",
-        model.name(), time_dependence_name(model.time_dependence()));
-  }
+  // A discrete model fitted without a time axis (its file states none) counts samples of any
+  // spacing, as documented: nothing to say.
+  if (!own) return {};
   return fmt::format(
       "the record has no time axis (--time COLUMN or --sample-time SECONDS): it "
       "is taken as sampled at the model's sample time {:.6g} s",

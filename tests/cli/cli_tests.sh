@@ -264,12 +264,18 @@ case_every_model() {
     sed -n '/^example model file:/,$p' "$WORK/stdout" | tail -n +2 >"$name.json"
     expect_ok "$HYST" info "$name.json"
     expect_stdout "model:      $name"
-    expect_ok "$HYST" simulate --model "$name.json" --input in.csv --column v --out "$name-y.csv"
+    # A model with time in it runs at its own sample time, said as the record's time axis.
+    local timed=()
+    local step
+    step="$(sed -n 's/.*"sample_time": *\([0-9.eE+-]*\).*/\1/p' "$name.json" | head -1)"
+    if [ -n "$step" ] && [ "$step" != 0 ] && [ "$step" != 0.0 ]; then timed=(--sample-time "$step"); fi
+    expect_ok "$HYST" simulate --model "$name.json" --input in.csv --column v --out "$name-y.csv" \
+      "${timed[@]}"
     if [ "$can_invert" = yes ]; then
       expect_ok "$HYST" invert --model "$name.json" --target "$name-y.csv" --column y \
-        --out "$name-v.csv"
+        --out "$name-v.csv" "${timed[@]}"
       expect_ok "$HYST" simulate --model "$name.json" --input "$name-v.csv" --column v \
-        --out "$name-y2.csv"
+        --out "$name-y2.csv" "${timed[@]}"
       expect_close "$name-y2.csv" 2 "$name-y.csv" 2 1e-6
     else
       expect_error 1 "has no inverse" -- "$HYST" invert --model "$name.json" \
@@ -277,7 +283,7 @@ case_every_model() {
     fi
     if [ "$can_fit" = yes ]; then
       expect_ok "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \
-        --validate-fraction 0.25 --out "$name-fit.json"
+        --validate-fraction 0.25 --out "$name-fit.json" "${timed[@]}"
       expect_stdout "$name fitted by"
     else
       expect_error 1 "$name" -- "$HYST" fit "$name" --data "$name-y.csv" --input v --output y \

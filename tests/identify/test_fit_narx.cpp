@@ -12,6 +12,7 @@
 
 #include "../support/expect_error.hpp"
 #include "../support/test_signals.hpp"
+#include "hyst/core/simulate.hpp"
 #include "hyst/identify/fit_narx.hpp"
 #include "hyst/operators/play.hpp"
 
@@ -78,6 +79,37 @@ TEST(FitNarx, SimulationErrorStageImprovesTheFreeRunOnNoisyData) {
   EXPECT_EQ(one_step.best_stage, 1u);
   EXPECT_EQ(simulation.best_stage, 2u);
   EXPECT_LT(simulation.report.validation->rmse, one_step.report.validation->rmse);
+}
+
+// A record with nothing but one sine in it (v and y = v + 0.2 cos: every regressor a phase of
+// the same sine) lets the one-step fit succeed with a network that runs away in free run: each
+// start and each retry with the stronger ridge is checked and refused, and the fit says where
+// the first left the range.
+TEST(FitNarx, AFitThatRunsAwayInFreeRunIsNotConverged) {
+  std::vector<double> v(300);
+  std::vector<double> y(300);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k] = std::sin(0.05 * static_cast<double>(k));
+    y[k] = v[k] + 0.2 * std::cos(0.05 * static_cast<double>(k));
+  }
+  NarxFitOptions options;
+  options.starts = 2;
+  const auto fit = fit_narx(v, y, options);
+  EXPECT_EQ(fit.report.termination, Termination::failed);
+  const auto& message = fit.report.message;
+  EXPECT_NE(message.find("unstable in free run: each of the 4 trained starts (regularization "
+                         "1e-06, then 0.001) runs away"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("by more than 10 widths at sample"), std::string::npos) << message;
+  // The model it returns does run away there: its free run leaves the range by 10 widths.
+  auto state = fit.initial_state;
+  std::vector<double> simulated(v.size());
+  simulate(fit.model, state, v, simulated);
+  const auto beyond = std::find_if(simulated.begin(), simulated.end(), [](double value) {
+    return !(std::abs(value) <= 1.02 + 10.0 * 2.04);
+  });
+  EXPECT_NE(beyond, simulated.end());
 }
 
 TEST(FitNarx, DefaultPlaysAndHeldOutFraction) {

@@ -233,11 +233,13 @@ TEST(TimedSimulation, ANarxRunsAtItsOwnSampleTimeOnly) {
         run(narx->clone(), {0.01, {0.01, 0.01, 0.02}}, input);
       },
       {"discrete", "not uniformly sampled", "sample 2", "0.02 s"});
-  // Fitted without a time axis, it takes any sample time, and says so.
+  // Fitted without a time axis, it takes any sample time, as its file says (no note).
   const auto untimed = model_of("narx", narx_params(0.0));
   EXPECT_FALSE(untimed->sample_time());
   EXPECT_EQ(run(untimed->clone(), {5.0, {}}, input).size(), 3U);
-  EXPECT_NE(untimed_record_note(*untimed).find("without a stated sample time"), std::string::npos);
+  EXPECT_EQ(untimed_record_note(*untimed), "");
+  EXPECT_NE(untimed_record_note(*narx).find("sampled at the model's sample time 0.01 s"),
+            std::string::npos);
 }
 
 TEST(TimedSimulation, BadSampleTimesAreRefusedByName) {

@@ -229,11 +229,13 @@ std::string default_sample_time(const ModelEntry& entry) {
 
 //! The fit option sample_time of a model whose fit has one: --sample-time, --time COLUMN, or else
 //! the "Time" column of an aixACCT export when the option is not given. Its source goes into
-//! `data_info`; a model whose output depends on time fitted without any of them gets a warning
-//! that its time constants are in samples of the default step. Throws hyst::Error for a time
-//! column that is not uniform, a model without a sample time, or a sample time given twice.
-void take_sample_time(const FitOptions& options, const ModelEntry& entry, const DataSource& data,
-                      nlohmann::json& fit_json, nlohmann::json& data_info) {
+//! `data_info`. Returns the warning for a model fitted without any of them (its time constants
+//! then count samples of the default step), said once the fit shows the model depends on time
+//! (untimed_fit_warning()); empty otherwise. Throws hyst::Error for a time column that is not
+//! uniform, a model without a sample time, or a sample time given twice.
+std::string take_sample_time(const FitOptions& options, const ModelEntry& entry,
+                             const DataSource& data, nlohmann::json& fit_json,
+                             nlohmann::json& data_info) {
   const bool timed = has_fit_option(entry, "sample_time");
   const bool given = fit_json.contains("sample_time");
   const bool from_option = options.sample_time > 0.0;
@@ -245,30 +247,33 @@ void take_sample_time(const FitOptions& options, const ModelEntry& entry, const 
                     models_with_a_sample_time(ModelRegistry::builtin())));
   }
   if (int(given) + int(from_option) + int(!options.time.empty()) > 1) {
+    std::vector<std::string> sources;
+    if (!options.time.empty()) sources.push_back("--time");
+    if (from_option) sources.push_back("--sample-time");
+    if (given) sources.push_back("--option sample_time");
     throw Error(
-        "--time, --sample-time and --option sample_time each give the sample time: give one");
+        fmt::format("{} and {} both give the sample time: give one", sources[0], sources[1]));
   }
-  if (!timed) return;
+  if (!timed) return {};
   if (given) {
     data_info["sample_time"] = {{"seconds", fit_json["sample_time"]}, {"source", "--option"}};
-    return;
+    return {};
   }
   if (from_option) {
     fit_json["sample_time"] = options.sample_time;
     data_info["sample_time"] = {{"seconds", options.sample_time}, {"source", "--sample-time"}};
-    return;
+    return {};
   }
   const bool aixacct_time = data.aixacct() != nullptr && data.has_column("Time");
   if (options.time.empty() && (!aixacct_time || !options.resample.empty())) {
     const std::string hint = time_like_columns(data);
-    warn(fmt::format(
+    data_info["sample_time"] = {{"seconds", default_sample_time(entry)},
+                                {"source", "none given: the fit option's default"}};
+    return fmt::format(
         "model '{}' depends on time but {} gives no time axis (--time COLUMN or --sample-time "
         "SECONDS): the sample time is taken as {} s, so its time constants count samples{}",
         entry.name, options.data, default_sample_time(entry),
-        hint.empty() ? "" : fmt::format(" (columns that look like time: {})", hint)));
-    data_info["sample_time"] = {{"seconds", default_sample_time(entry)},
-                                {"source", "none given: the fit option's default"}};
-    return;
+        hint.empty() ? "" : fmt::format(" (columns that look like time: {})", hint));
   }
   if (!options.resample.empty()) {
     throw Error(
@@ -280,6 +285,7 @@ void take_sample_time(const FitOptions& options, const ModelEntry& entry, const 
       data.column(column), fmt::format("{}: time column '{}'", options.data, column));
   fit_json["sample_time"] = sample_time;
   data_info["sample_time"] = {{"seconds", sample_time}, {"column", column}};
+  return {};
 }
 
 std::string models_that_can_fit(const ModelRegistry& registry) {
@@ -490,7 +496,7 @@ void run(const FitOptions& options) {
     data_info["validation"]["start"] = options.validation_start;
     data_info["validation"]["align"] = options.validation_align;
   }
-  take_sample_time(options, entry, data, fit_json, data_info);
+  const std::string untimed = take_sample_time(options, entry, data, fit_json, data_info);
   request.options = fit_json;
   request.preprocessing = prepare;
 
@@ -516,6 +522,10 @@ void run(const FitOptions& options) {
         fmt::format("fitting '{}' to {} failed: {}", entry.name, options.data, report.message));
   }
 
+  // A continuous-time model's time constants are in seconds only with a time axis (a model
+  // whose fit option only serves a part, e.g. a leakage term, or a NARX, which states none).
+  if (!untimed.empty() && outcome.model->time_dependence() == TimeDependence::continuous)
+    warn(untimed);
   write_fitted_model(*outcome.model, fit_info_json(report, data_info, fit_json), report,
                      options.out, options.report);
 }

@@ -83,6 +83,12 @@ struct NarxFit {
   std::size_t best_stage = 1;      //!< its stage: 1 one-step, 2 simulation error
 };
 
+//! Every trained start is run free on the whole fit part (from rest at its first sample); one
+//! that leaves the measured output range by more than 10 of its widths has run away and is not
+//! kept. When every start runs away, they are trained again with a ridge 1000 times stronger;
+//! when those run away too, the report's termination is "failed" with the message "unstable in
+//! free run: ..." naming the sample where the first start left the range.
+//!
 //! Fits one record, optionally holding out its last part for validation. Throws hyst::Error for
 //! invalid data (lengths differ, non-finite sample with its index, constant input or output, too
 //! few samples for the parameters) or options (named).

@@ -45,7 +45,8 @@ void simulate_on_time_axis(std::unique_ptr<DynamicModel>& model, const data::Tim
                            std::span<const double> input, std::span<double> output);
 
 //! One line for people when `model` depends on time but a record has no time axis: it is then
-//! taken as sampled at the model's own sample time. Empty for a rate-independent model.
+//! taken as sampled at the model's own sample time. Empty for a rate-independent model and for a
+//! discrete one without a stated sample time (it counts samples of any spacing).
 std::string untimed_record_note(const DynamicModel& model);
 
 }  // namespace hyst
