@@ -83,12 +83,32 @@ void split(std::string_view line, char separator, std::vector<std::string_view>&
 }
 
 char detect_separator(std::string_view header) {
-  // Characters inside a quoted name ("a;b") separate nothing.
+  // Characters inside a quoted name ("a;b") separate nothing. A quote opens a quoted name only
+  // at the start of a name (after a possible separator and blanks), as header_names() reads it;
+  // one inside a name (a"b) is a character of the name.
+  const auto may_separate = [](char c) {
+    return kDetectionOrder.find(c) != std::string_view::npos;
+  };
   std::string outside;
   bool quoted = false;
-  for (const char c : header) {
-    if (c == '"') quoted = !quoted;
-    if (!quoted) outside.push_back(c);
+  bool name_start = true;
+  for (std::size_t k = 0; k < header.size(); ++k) {
+    const char c = header[k];
+    if (quoted) {
+      if (c == '"' && k + 1 < header.size() && header[k + 1] == '"') {
+        ++k;  // "" stands for one quote
+      } else if (c == '"') {
+        quoted = false;
+      }
+      continue;
+    }
+    if (c == '"' && name_start) {
+      quoted = true;
+      name_start = false;
+      continue;
+    }
+    outside.push_back(c);
+    name_start = may_separate(c) || (name_start && (c == ' ' || c == '\t'));
   }
   for (const char candidate : kDetectionOrder) {
     if (candidate == ' ' || outside.find(candidate) != std::string::npos) return candidate;

@@ -218,6 +218,16 @@ TEST(FormatCsv, ANameStartingWithAQuoteIsWrittenQuotedAndReadsBack) {
   expect_identical(parse_csv(text, "round.csv"), table);
 }
 
+// Found by fuzz_csv: a quote inside a name (a"b) opens no quoted name, so it must not hide the
+// separator that follows from the detection either (the written table read back as one column).
+TEST(ParseCsv, AQuoteInsideANameHidesNoSeparator) {
+  const Table table = parse_csv("a\"b,c\n2,3\n", "q.csv");
+  EXPECT_EQ(table.names, (std::vector<std::string>{"a\"b", "c"}));
+  expect_identical(parse_csv(format_csv(table), "round.csv"), table);
+  EXPECT_EQ(parse_csv("x \"y\";z\n1;2\n", "q.csv").names,
+            (std::vector<std::string>{"x \"y\"", "z"}));
+}
+
 TEST(ParseCsv, UnnamedSourceUsesLineNumbersOnly) {
   EXPECT_HYST_ERROR(parse_csv("t\nq\n", ""), "line 2: column 1 ('t'): 'q' is not a number");
   try {
