@@ -287,11 +287,12 @@ std::string format_table(const Table& table, const CsvWriteOptions& options,
   for (std::size_t j = 0; j < table.names.size(); ++j) {
     if (j > 0) out.push_back(separator);
     const std::string& name = table.names[j];
-    if (name.front() != '"') {
+    if (name.find('"') == std::string::npos) {
       out += name;
       continue;
     }
-    // Read back unquoted otherwise (RFC 4180): quoted, each quote doubled.
+    // A name with a quote in it (RFC 4180): quoted, each quote doubled, so that neither the
+    // separator detection nor the header reader takes the quote for the start of a quoted name.
     out.push_back('"');
     for (const char c : name) {
       if (c == '"') out.push_back('"');
