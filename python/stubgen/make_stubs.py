@@ -85,14 +85,10 @@ class Names:
 
 
 def signature_lines(doc, name):
-    """The signature lines of a docstring: one, or each of an overloaded function's."""
-    if not doc:
-        return []
-    if "\nOverloaded function." in doc:
-        return [line.split(". ", 1)[1] for line in doc.splitlines()
-                if re.match(rf"\d+\. {re.escape(name)}\(", line)]
-    first = doc.lstrip().split("\n", 1)[0]
-    return [first] if first.startswith(f"{name}(") else []
+    """The signature lines of a docstring (hyst._signatures', imported once main() has put the
+    built package on the path)."""
+    from hyst._signatures import signature_lines as lines
+    return lines(doc, name)
 
 
 def render_signature(parse, names, line, name, module, returns=None, drop_self=False):
