@@ -10,12 +10,8 @@ DomainCheck check_record_inputs(const std::optional<FittedDomain>& domain,
                                 std::span<const double> input,
                                 const std::optional<RecordTime>& time) {
   if (!domain) return {};
-  DomainCheck check = check_inputs(*domain, input);
-  const auto timing = time ? check_timing(*domain, input, time->axis.sample_time, time->axis.steps)
-                           : check_timing(*domain, input, std::nullopt);
-  check.excursions.insert(check.excursions.end(), timing.excursions.begin(),
-                          timing.excursions.end());
-  return check;
+  if (!time) return hyst::check_record_inputs(*domain, input, std::nullopt);
+  return hyst::check_record_inputs(*domain, input, time->axis.sample_time, time->axis.steps);
 }
 
 void report_domain(const DomainCheck& check, std::size_t samples, std::string_view model,

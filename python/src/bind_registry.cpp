@@ -408,11 +408,8 @@ void bind_registry(py::module_& module) {
         out["time_dependence"] = std::string(to_string(timed->time_dependence()));
         out["sample_time"] = timed->sample_time();
         if (domain) {
-          auto check = check_inputs(*domain, u);
-          const auto timing =
-              check_timing(*domain, u, axis ? std::optional(axis->sample_time) : std::nullopt);
-          check.excursions.insert(check.excursions.end(), timing.excursions.begin(),
-                                  timing.excursions.end());
+          const auto check = axis ? check_record_inputs(*domain, u, axis->sample_time, axis->steps)
+                                  : check_record_inputs(*domain, u, std::nullopt);
           out["domain"] =
               py::dict("inside"_a = check.inside(), "message"_a = check.message(u.size()));
         } else {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -118,6 +119,18 @@ DomainCheck check_timing(const FittedDomain& domain, std::span<const double> inp
   }
   if (rates.samples > 0) check.excursions.push_back(std::move(rates));
   if (holds.samples > 0) check.excursions.push_back(std::move(holds));
+  return check;
+}
+
+void DomainCheck::append(DomainCheck other) {
+  excursions.insert(excursions.end(), std::make_move_iterator(other.excursions.begin()),
+                    std::make_move_iterator(other.excursions.end()));
+}
+
+DomainCheck check_record_inputs(const FittedDomain& domain, std::span<const double> input,
+                                std::optional<double> sample_time, std::span<const double> steps) {
+  DomainCheck check = check_inputs(domain, input);
+  check.append(check_timing(domain, input, sample_time, steps));
   return check;
 }
 

@@ -192,15 +192,10 @@ nlohmann::json fit_options(const FitOptions& options) {
   return json;
 }
 
-bool has_fit_option(const ModelEntry& entry, std::string_view name) {
-  return std::any_of(entry.fit_options.begin(), entry.fit_options.end(),
-                     [&](const ParameterInfo& option) { return option.name == name; });
-}
-
 std::string models_with_a_sample_time(const ModelRegistry& registry) {
   std::string list;
   for (const auto& entry : registry.entries()) {
-    if (has_fit_option(entry, "sample_time")) list += (list.empty() ? "" : ", ") + entry.name;
+    if (fits_sample_time(entry)) list += (list.empty() ? "" : ", ") + entry.name;
   }
   return list;
 }
@@ -236,7 +231,7 @@ std::string default_sample_time(const ModelEntry& entry) {
 std::string take_sample_time(const FitOptions& options, const ModelEntry& entry,
                              const DataSource& data, nlohmann::json& fit_json,
                              nlohmann::json& data_info) {
-  const bool timed = has_fit_option(entry, "sample_time");
+  const bool timed = fits_sample_time(entry);
   const bool given = fit_json.contains("sample_time");
   const bool from_option = options.sample_time > 0.0;
   if ((from_option || !options.time.empty()) && !timed) {
@@ -354,7 +349,7 @@ void run_tables_fit(const FitOptions& options, const ModelEntry& entry) {
   if (!options.report.empty()) outputs.push_back({options.report, "--report"});
   io::check_outputs({{options.data, "--data"}}, outputs);
 
-  const bool timed = has_fit_option(entry, "sample_time");
+  const bool timed = fits_sample_time(entry);
   if (timed && fit_json.contains("sample_time")) {
     throw Error(
         "--tables takes each table's sample time from its 'Time' column: give no "

@@ -84,10 +84,8 @@ void run(const InvertOptions& options) {
   }
   // The inputs the inverse asks for: rates and holds beyond the fitted ones.
   if (domain) {
-    const auto timing = time ? check_timing(*domain, input, time->axis.sample_time)
-                             : check_timing(*domain, input, std::nullopt);
-    domain_check.excursions.insert(domain_check.excursions.end(), timing.excursions.begin(),
-                                   timing.excursions.end());
+    domain_check.append(time ? check_timing(*domain, input, time->axis.sample_time)
+                             : check_timing(*domain, input, std::nullopt));
   }
 
   io::Table table;

@@ -64,6 +64,8 @@ struct DomainExcursion {
 struct DomainCheck {
   std::vector<DomainExcursion> excursions;
   bool inside() const { return excursions.empty(); }
+  //! Adds the excursions of `other` after these.
+  void append(DomainCheck other);
   //! One sentence: "12 of 401 samples: inputs beyond the fitted input range [-1, 1] by more than
   //! 5 % of its width (first at sample 3); ...", for a warning line.
   std::string message(std::size_t record_samples) const;
@@ -82,6 +84,11 @@ DomainCheck check_inputs(const FittedDomain& domain, std::span<const double> inp
 //! a non-uniform record) and take the place of `sample_time`.
 DomainCheck check_timing(const FittedDomain& domain, std::span<const double> input,
                          std::optional<double> sample_time, std::span<const double> steps = {});
+
+//! The inputs of a record (check_inputs()) and their rates and holds (check_timing()).
+DomainCheck check_record_inputs(const FittedDomain& domain, std::span<const double> input,
+                                std::optional<double> sample_time,
+                                std::span<const double> steps = {});
 
 //! The targets of an inverse that lie beyond every output the fit measured.
 DomainCheck check_targets(const FittedDomain& domain, std::span<const double> targets);
