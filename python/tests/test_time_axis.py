@@ -125,3 +125,20 @@ def test_the_fitted_domain_knows_rates_holds_and_the_slowest_lag(tmp_path):
     result = hyst.evaluate(fitted.model, long_holds, creep.simulate(long_holds), domain=domain)
     assert result["domain"]["inside"] is False and "holds" in result["domain"]["message"]
     assert hyst.evaluate(fitted.model, v, creep.simulate(v))["domain"] is None
+
+
+def test_leakage_and_the_logarithmic_law_from_python():
+    leaky = dict(CREEP, leakage_conductance=0.004, leakage_current=-0.002)
+    model = hyst.Model("pi_creep", leaky)
+    v = staircase(500)
+    times = np.arange(v.size) * 0.01
+    y = model.simulate(v)
+    fitted = hyst.fit("pi_creep", v, y, time=times, thresholds=[0.0, 0.5],
+                      time_constants=[0.05, 0.3], fit_leakage=True)
+    assert fitted.model.params["leakage_conductance"] == pytest.approx(0.004, abs=1e-8)
+    assert fitted.model.params["leakage_current"] == pytest.approx(-0.002, abs=1e-8)
+    law = hyst.fit("pi_creep", v, y, time=times, creep_law="logarithmic")
+    assert "logarithmic creep law" in law.report.method
+    assert law.model.params["time_constants"][-1] == pytest.approx(1e5)
+    with pytest.raises(hyst.Error, match="expected free or logarithmic"):
+        hyst.fit("pi_creep", v, y, time=times, creep_law="log")

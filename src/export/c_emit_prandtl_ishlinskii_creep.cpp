@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "c_emitters.hpp"
+#include "hyst/core/error.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 
 namespace hyst::detail {
@@ -384,6 +385,12 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
 
 CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
                   const CWriter& writer, const CExportOptions& options) {
+  if (model.has_leakage()) {
+    throw Error(
+        "C export of a PI with creep: the leakage term (leakage_conductance, leakage_current) is "
+        "not exported; fit without fit_leakage, or set both to 0 in the model file",
+        "leakage_conductance");
+  }
   const bool invertible =
       PrandtlIshlinskii({model.params().thresholds, model.instantaneous_weights(), 0.0})
           .is_invertible();

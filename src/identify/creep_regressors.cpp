@@ -30,6 +30,29 @@ std::vector<double> sample_times_of(std::span<const FitRecord> records,
   return {options.sample_times.begin(), options.sample_times.end()};
 }
 
+// lags_per_decade per decade from 10 Ts (the shortest) to longest_time_constant.
+std::vector<double> law_time_constants(std::span<const double> sample_times,
+                                       const CreepStructureOptions& options, std::string_view who) {
+  if (options.lags_per_decade < 1 || options.lags_per_decade > 12) {
+    throw Error(
+        fmt::format("{}: lags_per_decade = {} must be in [1, 12]", who, options.lags_per_decade),
+        "lags_per_decade");
+  }
+  const double shortest = 10.0 * *std::min_element(sample_times.begin(), sample_times.end());
+  const double longest = options.longest_time_constant;
+  if (!std::isfinite(longest) || !(longest > shortest) || longest > 1e12) {
+    throw Error(fmt::format("{}: longest_time_constant = {} s must be finite, at most 1e12 s and "
+                            "longer than 10 sample times ({} s)",
+                            who, longest, shortest),
+                "longest_time_constant");
+  }
+  const double decades = std::log10(longest / shortest);
+  const auto count = static_cast<std::size_t>(
+                         std::ceil(decades * static_cast<double>(options.lags_per_decade) - 1e-9)) +
+                     1;
+  return log_spaced_time_constants(shortest, longest, count);
+}
+
 PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
                                     std::span<const double> inputs,
                                     std::span<const double> sample_times,
@@ -43,7 +66,9 @@ PrandtlIshlinskiiCreep structure_of(std::span<const FitRecord> records,
                                                  : std::vector<double>(options.thresholds.begin(),
                                                                        options.thresholds.end());
   params.time_constants.assign(options.time_constants.begin(), options.time_constants.end());
-  if (params.time_constants.empty() && options.lags > 0) {
+  if (params.time_constants.empty() && options.creep_law == CreepLaw::logarithmic) {
+    params.time_constants = law_time_constants(sample_times, options, who);
+  } else if (params.time_constants.empty() && options.lags > 0) {
     const double shortest = 10.0 * *std::min_element(sample_times.begin(), sample_times.end());
     if (!(duration > shortest)) {
       throw Error(
@@ -102,6 +127,23 @@ CreepRegressors creep_regressors(std::span<const FitRecord> records,
   }
   return {std::move(structure), std::move(sample_times), std::move(A), std::move(inputs),
           std::move(outputs)};
+}
+
+Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Index columns,
+                                  double smoothing) {
+  const auto n = static_cast<Eigen::Index>(regressors.structure.size());
+  const auto lags = static_cast<Eigen::Index>(regressors.structure.lags());
+  if (lags < 2 || smoothing == 0.0) return Eigen::MatrixXd(0, columns);
+  Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero((lags - 1) * n, columns);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const auto play = regressors.columns.col(j);
+    const double scale = smoothing * (play.array() - play.mean()).matrix().norm();
+    for (Eigen::Index i = 0; i + 1 < lags; ++i) {
+      penalty(i * n + j, n + i * n + j) = -scale;
+      penalty(i * n + j, n + (i + 1) * n + j) = scale;
+    }
+  }
+  return penalty;
 }
 
 }  // namespace hyst::detail

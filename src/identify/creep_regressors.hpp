@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "hyst/core/simulate.hpp"
+#include "hyst/identify/creep_law.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/identify/fit_record.hpp"
 #include "hyst/models/prandtl_ishlinskii_creep.hpp"
@@ -27,12 +28,23 @@ struct CreepStructureOptions {
   double sample_time = 1.0;
   std::span<const double> sample_times;  // one per record, or empty
   PiFitOptions::InitialState initial_state = PiFitOptions::InitialState::virgin;
+  // logarithmic: default time constants lags_per_decade per decade up to longest_time_constant.
+  CreepLaw creep_law = CreepLaw::free;
+  std::size_t lags_per_decade = 2;
+  double longest_time_constant = 1e5;
 };
 
 template <class Options>
 CreepStructureOptions creep_structure_options(const Options& options) {
-  return {options.operators,   options.thresholds,   options.lags,         options.time_constants,
-          options.sample_time, options.sample_times, options.initial_state};
+  CreepStructureOptions structure{options.operators,      options.thresholds,  options.lags,
+                                  options.time_constants, options.sample_time, options.sample_times,
+                                  options.initial_state};
+  if constexpr (requires { options.creep_law; }) {
+    structure.creep_law = options.creep_law;
+    structure.lags_per_decade = options.lags_per_decade;
+    structure.longest_time_constant = options.longest_time_constant;
+  }
+  return structure;
 }
 
 // Checks sample_time (> 0, finite); messages start with `who`.
@@ -52,6 +64,13 @@ struct CreepRegressors {
 // record, or when there are fewer samples than columns + 2.
 CreepRegressors creep_regressors(std::span<const FitRecord> records,
                                  const CreepStructureOptions& options, std::string_view who);
+
+// The rows of the logarithmic law's penalty (fit_prandtl_ishlinskii_creep.hpp) for the creep
+// columns of `regressors` (the n play columns first, then one block of n per lag): row (i, j) is
+// smoothing |w_j - mean w_j| (c_{i+1,j} - c_ij), zero on every other column of `columns` (the
+// total column count, >= the creep columns). Empty for fewer than two lags or smoothing 0.
+Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Index columns,
+                                  double smoothing);
 
 // The state a record starts from: virgin, or the periodic steady state of its input.
 template <class Model>

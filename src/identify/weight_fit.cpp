@@ -48,6 +48,11 @@ RecordParts split_record(std::span<const double> input, std::span<const double> 
 }
 
 OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset) {
+  return nnls_with_offset(std::move(A), std::move(b), fit_offset, Eigen::MatrixXd(0, 0));
+}
+
+OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset,
+                            const Eigen::MatrixXd& penalty) {
   Eigen::RowVectorXd means = Eigen::RowVectorXd::Zero(A.cols());
   double b_mean = 0.0;
   if (fit_offset) {
@@ -56,6 +61,13 @@ OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offse
     b_mean = b.mean();
     A.rowwise() -= means;
     b.array() -= b_mean;
+  }
+  if (penalty.rows() > 0) {
+    const Eigen::Index data_rows = A.rows();
+    A.conservativeResize(data_rows + penalty.rows(), Eigen::NoChange);
+    A.bottomRows(penalty.rows()) = penalty;
+    b.conservativeResize(data_rows + penalty.rows());
+    b.tail(penalty.rows()).setZero();
   }
   OffsetNnls solution;
   solution.nnls = nnls(A, b);

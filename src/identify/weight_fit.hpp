@@ -38,6 +38,10 @@ struct OffsetNnls {
   NnlsResult nnls;
 };
 OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset);
+// The same with the penalty ||penalty x||^2 added (rows appended after the offset is removed,
+// so the offset stays the mean residual of the data rows).
+OffsetNnls nnls_with_offset(Eigen::MatrixXd A, Eigen::VectorXd b, bool fit_offset,
+                            const Eigen::MatrixXd& penalty);
 
 // 0.5 sum (measured - predicted)^2, the cost of a FitReport.
 double half_sum_of_squares(std::span<const double> measured, std::span<const double> predicted);

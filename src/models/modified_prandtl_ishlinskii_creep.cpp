@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "detail/parameter_rules.hpp"
+#include "hyst/core/error.hpp"
 
 namespace hyst {
 
@@ -14,6 +15,12 @@ ModifiedPrandtlIshlinskiiCreep::ModifiedPrandtlIshlinskiiCreep(Params params)
           params_.dead_zone, "dead_zone")) {
   const detail::ParameterRules rules{"modified PI with creep"};
   rules.finite(params_.offset, "offset", "offset");
+  if (core_.has_leakage()) {
+    throw Error(
+        "modified PI with creep: pi_creep.leakage_conductance and pi_creep.leakage_current must "
+        "be 0 (a leakage drift adds to the output after the dead zones: use pi_creep)",
+        "pi_creep.leakage_conductance");
+  }
   rules.output_limits(params_.output_min, params_.output_max);
 }
 

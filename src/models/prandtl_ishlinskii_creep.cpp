@@ -37,6 +37,8 @@ void validate_creep(const PrandtlIshlinskiiCreep::Params& p) {
                   fmt::format("time_constants[{}]", i));
     }
   }
+  rules.finite(p.leakage_conductance, "leakage conductance g", "leakage_conductance");
+  rules.finite(p.leakage_current, "leakage current i0", "leakage_current");
   const std::size_t expected = tau.size() * p.thresholds.size();
   if (p.creep_weights.size() != expected) {
     throw Error(
@@ -101,16 +103,19 @@ PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::periodic_state(
     for (std::size_t j = 0; j < n; ++j)
       state.creep[i * n + j] = weighted[i * n + j] / settle;
   }
+  state.leakage = 0.0;  // a drift has no periodic state: its charge counts from the start
   return state;
 }
 
 PrandtlIshlinskiiCreep::State PrandtlIshlinskiiCreep::make_state(std::vector<double> play,
-                                                                 std::vector<double> creep) const {
+                                                                 std::vector<double> creep,
+                                                                 double leakage) const {
   require_reachable_plays(play, params_.thresholds, "PI with creep", "w");
   require_same_size(creep.size(), "PI with creep state z", size() * lags(),
                     "time constants x thresholds");
   require_finite(creep, "PI with creep state z");
-  return State{std::move(play), std::move(creep)};
+  require_finite(leakage, "PI with creep state L");
+  return State{std::move(play), std::move(creep), leakage};
 }
 
 double PrandtlIshlinskiiCreep::output(const State& state) const {
@@ -120,7 +125,7 @@ double PrandtlIshlinskiiCreep::output(const State& state) const {
   double y = hysteresis_.output(PrandtlIshlinskii::State{state.play});
   for (std::size_t ij = 0; ij < state.creep.size(); ++ij)
     y += params_.creep_weights[ij] * state.creep[ij];
-  return y;
+  return y + state.leakage;
 }
 
 std::vector<double> PrandtlIshlinskiiCreep::instantaneous_weights() const {
@@ -129,6 +134,7 @@ std::vector<double> PrandtlIshlinskiiCreep::instantaneous_weights() const {
     for (std::size_t j = 0; j < size(); ++j)
       weights[j] += params_.creep_weights[i * size() + j] * (1.0 - decay_[i]);
   }
+  weights[0] += params_.leakage_conductance * params_.sample_time;
   return weights;
 }
 

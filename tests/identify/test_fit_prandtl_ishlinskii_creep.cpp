@@ -3,6 +3,8 @@
 // third, slower rate; a rate-independent PI cannot (the second model of the comparison).
 
 #include <cmath>
+#include <initializer_list>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -193,6 +195,66 @@ TEST(FitPiCreep, MeasuredPolarisationAtASlowerRate) {
   EXPECT_LT(creep_predicted, 0.7 * pi_predicted);
 }
 
+// Steps held `hold` seconds between the levels, then back to 0.
+std::vector<double> staircase(std::initializer_list<double> levels, double hold, double ts) {
+  std::vector<double> v;
+  const auto samples = static_cast<std::size_t>(std::lround(hold / ts));
+  for (double level : levels)
+    v.insert(v.end(), samples, level);
+  return v;
+}
+
+// A logarithmic creep over seven decades: the record holds each step 20 s, the prediction holds
+// one for 2000 s. The free weights stop creeping after the record's length (their slowest lag);
+// the law keeps creeping by the same amount per decade, as the actuator does.
+TEST(FitPiCreep, TheLogarithmicLawExtrapolatesAHoldHundredTimesLonger) {
+  const double ts = 0.05;
+  const PrandtlIshlinskiiCreep actuator(pi_logarithmic_creep(
+      {.thresholds = {0.0, 0.3, 0.6}, .weights = {1.0, 0.4, 0.2}, .offset = 0.0}, 0.03, 0.1, 7, 3,
+      ts));
+  const auto v = staircase({1.0, -0.6, 0.8, 0.2, -1.0, 0.0}, 20.0, ts);
+  const auto y = response(actuator, v);
+  PiCreepFitOptions options{.thresholds = actuator.params().thresholds, .sample_time = ts};
+  const auto free_fit = fit_prandtl_ishlinskii_creep(v, y, options);
+  options.creep_law = CreepLaw::logarithmic;
+  const auto law_fit = fit_prandtl_ishlinskii_creep(v, y, options);
+  EXPECT_NE(law_fit.report.method.find("logarithmic creep law (smoothing"), std::string::npos)
+      << law_fit.report.method;
+  EXPECT_GE(law_fit.model.params().time_constants.back(), 0.99e5);
+
+  const double coarse = 0.5;  // the long hold at a coarser step: the models are re-discretised
+  const auto hold = staircase({1.0}, 2000.0, coarse);
+  const auto expected = response(actuator.at_sample_time(coarse), hold);
+  const auto free_run = response(free_fit.model.at_sample_time(coarse), hold);
+  const auto law_run = response(law_fit.model.at_sample_time(coarse), hold);
+  const double step = expected.front();
+  const double free_error = std::abs(free_run.back() - expected.back()) / step;
+  const double law_error = std::abs(law_run.back() - expected.back()) / step;
+  // From 100 s to 2000 s the actuator creeps 1.3 decades x 3 % of the step more.
+  EXPECT_GT(free_error, 0.015);
+  EXPECT_LT(law_error, 0.01);
+  EXPECT_LT(law_error, 0.3 * free_error);
+}
+
+// Leakage: a drift g v + i0 integrated over time, identified beside exact creep.
+TEST(FitPiCreep, RecoversTheLeakageFromTheHolds) {
+  auto params = truth().params();
+  params.leakage_conductance = 0.004;
+  params.leakage_current = -0.002;
+  const PrandtlIshlinskiiCreep leaky(params);
+  const auto v = staircase({1.0, -0.6, 0.8, 0.2, -1.0, 0.3}, 10.0, kTs);
+  const auto y = response(leaky, v);
+  auto options = truth_structure();
+  options.fit_leakage = true;
+  const auto fit = fit_prandtl_ishlinskii_creep(v, y, options);
+  EXPECT_NEAR(fit.model.params().leakage_conductance, 0.004, 1e-8);
+  EXPECT_NEAR(fit.model.params().leakage_current, -0.002, 1e-8);
+  EXPECT_EQ(fit.report.parameters, 3 + 6 + 2 + 1);
+  // Without the term the drift is taken up by the other weights and the fit is worse.
+  const auto without = fit_prandtl_ishlinskii_creep(v, y, truth_structure());
+  EXPECT_GT(without.report.fit.rmse, 100.0 * fit.report.fit.rmse + 1e-6);
+}
+
 TEST(FitPiCreep, BadOptionsAndRecordsAreNamed) {
   const auto v = triangle(0.5);
   const auto y = response(truth(), v);
@@ -213,6 +275,18 @@ TEST(FitPiCreep, BadOptionsAndRecordsAreNamed) {
   const std::vector<double> few(v.begin(), v.begin() + 8);
   const std::vector<double> few_y(y.begin(), y.begin() + 8);
   EXPECT_HYST_ERROR(fit_prandtl_ishlinskii_creep(few, few_y, defaults), "too short");
+  auto law = truth_structure();
+  law.creep_law = CreepLaw::logarithmic;
+  law.time_constants.clear();
+  law.law_smoothing = -1.0;
+  EXPECT_HYST_ERROR(fit_prandtl_ishlinskii_creep(v, y, law), "law_smoothing = -1");
+  law.law_smoothing = 0.1;
+  law.lags_per_decade = 0;
+  EXPECT_HYST_ERROR(fit_prandtl_ishlinskii_creep(v, y, law), "lags_per_decade = 0");
+  law.lags_per_decade = 2;
+  law.longest_time_constant = 0.05;
+  EXPECT_HYST_ERROR(fit_prandtl_ishlinskii_creep(v, y, law), "longest_time_constant = 0.05");
+  EXPECT_HYST_ERROR(creep_law_from_string("log"), "expected free or logarithmic");
 }
 
 }  // namespace

@@ -161,6 +161,9 @@ TEST(ModifiedPrandtlIshlinskiiCreep, ValidationNamesThePartAndTheParameter) {
   params = two_plays_two_lags_saturating();
   params.offset = std::nan("");
   EXPECT_HYST_ERROR(ModifiedPrandtlIshlinskiiCreep{params}, "offset = nan is not finite");
+  params = two_plays_two_lags_saturating();
+  params.pi_creep.leakage_current = 0.1;  // a drift would pass through the dead zones
+  EXPECT_HYST_ERROR(ModifiedPrandtlIshlinskiiCreep{params}, "use pi_creep");
   // A map that turns back is not invertible, and the inverse says which partial sum.
   params = two_plays_two_lags_saturating();
   params.dead_zone.weights = {-0.5, 1.0, -1.5};

@@ -146,6 +146,51 @@ TEST(PrandtlIshlinskiiCreep, InverseReproducesTargetsExactly) {
   }
 }
 
+// Hand calculation: after k samples of a held input v from the virgin state, the leakage is
+// k Ts (g v + i0) on top of the model without leakage.
+TEST(PrandtlIshlinskiiCreep, LeakageIsTheIntegratedConductionAndOffsetCurrent) {
+  auto params = two_plays_two_lags();
+  const PrandtlIshlinskiiCreep without(params);
+  params.leakage_conductance = 0.02;
+  params.leakage_current = -0.005;
+  const PrandtlIshlinskiiCreep with(params);
+  EXPECT_TRUE(with.has_leakage());
+  EXPECT_FALSE(without.has_leakage());
+  auto state = with.initial_state();
+  auto reference = without.initial_state();
+  for (int k = 1; k <= 500; ++k) {
+    const double y = with.step(state, 1.5);
+    const double y0 = without.step(reference, 1.5);
+    ASSERT_NEAR(y - y0, k * 0.01 * (0.02 * 1.5 - 0.005), 1e-12) << "sample " << k;
+  }
+  EXPECT_NEAR(with.output(state) - without.output(reference), 500 * 0.01 * 0.025, 1e-12);
+  // The periodic state counts the drift from the start of the period.
+  EXPECT_EQ(with.periodic_state(test::random_walk(200, 3, 1.0)).leakage, 0.0);
+  // At another sample time the rates per second stay: the same drift after the same time.
+  const auto coarse = with.at_sample_time(0.05);
+  auto coarse_state = coarse.initial_state();
+  for (int k = 0; k < 100; ++k)
+    coarse.step(coarse_state, 1.5);
+  EXPECT_NEAR(coarse_state.leakage, state.leakage, 1e-12);
+}
+
+TEST(PrandtlIshlinskiiCreep, InverseWithLeakageReproducesTargets) {
+  auto params = two_plays_two_lags();
+  params.leakage_conductance = 0.05;
+  params.leakage_current = 0.01;
+  const PrandtlIshlinskiiCreep model(params);
+  const InversePrandtlIshlinskiiCreep inverse(model);
+  auto inverse_state = inverse.initial_state();
+  const auto input = test::random_walk(3000, 11, 2.0);
+  auto probe = model.initial_state();
+  const auto targets = simulate(model, probe, input);
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const auto sample = inverse.solve(inverse_state, targets[k]);
+    ASSERT_EQ(sample.status, InverseStatus::ok);
+    ASSERT_NEAR(sample.input, input[k], 1e-8) << "sample " << k;
+  }
+}
+
 TEST(PrandtlIshlinskiiCreep, LimitedInverseReportsAndKeepsTracking) {
   const PrandtlIshlinskiiCreep model(two_plays_two_lags());
   const InversePrandtlIshlinskiiCreep inverse(model, {.input_min = -1.0, .input_max = 1.0});
@@ -184,6 +229,9 @@ TEST(PrandtlIshlinskiiCreep, ValidationNamesTheParameter) {
   EXPECT_HYST_ERROR(model.make_state({0.0, 0.0}, {0.0}), "PI with creep state z");
   EXPECT_HYST_ERROR(pi_logarithmic_creep({{0.0}, {1.0}, 0.0}, -0.1, 1.0, 3, 2, 0.01),
                     "logarithmic creep gamma = -0.1 must be >= 0");
+  auto leaky = two_plays_two_lags();
+  leaky.leakage_current = std::nan("");
+  EXPECT_HYST_ERROR(PrandtlIshlinskiiCreep{leaky}, "leakage current");
 }
 
 }  // namespace

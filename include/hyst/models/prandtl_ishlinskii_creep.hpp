@@ -16,6 +16,16 @@
 //! sample by sample: y[k] is a PI in v[k] with the effective weights p_j + sum_i c_ij (1 - a_i)
 //! plus a term fixed by the past (inverse_prandtl_ishlinskii_creep.hpp).
 //!
+//! Leakage (optional, 0 by default): a lossy ceramic conducts a current besides its switching
+//! one, and a charge integrator (a ferroelectric tester's polarisation) adds that current's charge:
+//!
+//!     y[k] += L[k],   L[k] = L[k-1] + Ts (g v[k] + i0),   L = 0 in the virgin state,
+//!
+//! a conduction g [output units / (input units s)] and an offset current i0 [output units / s]
+//! (an integrator's input offset), both of either sign, integrated with the input of sample k
+//! acting from t_{k-1} on, as the lags. L grows without bound during a hold: a drift, not a
+//! hysteresis; the inverse treats it as memory plus the linear weight g Ts of the current input.
+//!
 //! With every c_ij = 0 it is the PrandtlIshlinskii of the same thresholds and weights. A step of
 //! size V from rest settles at sum_j (p_j + sum_i c_ij) P_rj[V]: the creep weights say how much
 //! each play's displacement grows after the step, the time constants when. Time constants spaced
@@ -28,8 +38,10 @@
 //! - time_constants tau_i [s]: finite, > 0, strictly increasing; may be empty (no creep);
 //! - creep_weights c_ij [output/input units]: finite and >= 0, row i (time constant) by column j
 //!   (play), row-major, n_tau * n values;
-//! - sample_time Ts [s] > 0; offset y_off [output units].
-//! State: the plays w_j and the creep elements z_ij [input units], 0 in the virgin state.
+//! - sample_time Ts [s] > 0; offset y_off [output units];
+//! - leakage_conductance g, leakage_current i0: finite, 0 = no leakage.
+//! State: the plays w_j and the creep elements z_ij [input units], 0 in the virgin state; the
+//! leakage L [output units].
 //! Sources: Kuhnen (2001), "Modellbildung und Kompensation von Kriech- und Hystereseeffekten";
 //! Krejci & Kuhnen (2001), IEE Proc. Control Theory Appl. 148(3):185-192.
 
@@ -53,10 +65,13 @@ class PrandtlIshlinskiiCreep {
     std::vector<double> creep_weights{};   //!< c_ij >= 0, row-major (tau_i by r_j)
     double sample_time = 1.0;              //!< Ts > 0 [s]
     double offset = 0.0;                   //!< y_off [output units]
+    double leakage_conductance = 0.0;      //!< g [output units / (input units s)]
+    double leakage_current = 0.0;          //!< i0 [output units / s]
   };
   struct State {
     std::vector<double> play;   //!< w_j [input units]
     std::vector<double> creep;  //!< z_ij [input units], row-major like creep_weights
+    double leakage = 0.0;       //!< L [output units], the leakage's charge so far
   };
 
   //! Throws hyst::Error naming the first parameter that breaks a rule.
@@ -89,18 +104,25 @@ class PrandtlIshlinskiiCreep {
   State periodic_state(std::span<const double> period) const;
   //! A given state; throws hyst::Error for a wrong size, a value that is not finite, or plays no
   //! input history reaches (as PrandtlIshlinskii::make_state).
-  State make_state(std::vector<double> play, std::vector<double> creep) const;
+  State make_state(std::vector<double> play, std::vector<double> creep, double leakage = 0.0) const;
 
   //! The output in a given state, without advancing it.
   double output(const State& state) const;
 
-  //! p_j + sum_i c_ij (1 - a_i): the weights of the plays at the current sample, through which
-  //! the output depends on the current input.
+  //! Whether the leakage term is present (g or i0 not 0).
+  bool has_leakage() const noexcept {
+    return params_.leakage_conductance != 0.0 || params_.leakage_current != 0.0;
+  }
+
+  //! p_j + sum_i c_ij (1 - a_i) (and + g Ts for p_0, the play of threshold 0, which is v): the
+  //! weights of the plays at the current sample, through which the output depends on the
+  //! current input.
   std::vector<double> instantaneous_weights() const;
-  //! sum_ij c_ij a_i z_ij: the part of the next output fixed by the state before the sample.
+  //! sum_ij c_ij a_i z_ij + L + Ts i0: the part of the next output fixed by the state before the
+  //! sample.
   double creep_memory(const State& state) const noexcept {
     const std::size_t n = size();
-    double memory = 0.0;
+    double memory = state.leakage + params_.sample_time * params_.leakage_current;
     for (std::size_t i = 0; i < lags(); ++i) {
       for (std::size_t j = 0; j < n; ++j)
         memory += params_.creep_weights[i * n + j] * decay_[i] * state.creep[i * n + j];
@@ -133,7 +155,9 @@ class PrandtlIshlinskiiCreep {
         y += c[ij] * z[ij];
       }
     }
-    return y;
+    state.leakage +=
+        params_.sample_time * (params_.leakage_conductance * input + params_.leakage_current);
+    return y + state.leakage;
   }
 
  private:
