@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 
 #include "c_emitters.hpp"
-#include "hyst/core/error.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 
 namespace hyst::detail {
@@ -41,13 +40,13 @@ typedef struct {
   @_real decay[@_CREEP_SIZE];
   @_real creep_weights[@_CREEP_SIZE];
   @_real offset;
-%SHAPE_FIELDS%} @_params;
+%LEAK_FIELDS%%SHAPE_FIELDS%} @_params;
 
-/* State: the play outputs w_j and the lags z_ij [input units]. */
+/* State: the play outputs w_j and the lags z_ij [input units]%LEAK_STATE_NOTE%. */
 typedef struct {
   @_real play[@_OPERATORS];
   @_real creep[@_CREEP_SIZE];
-} @_state;
+%LEAK_STATE%} @_state;
 )";
 
 constexpr std::string_view kCreepModelFunctions =
@@ -67,12 +66,12 @@ static void @_copy(@_real *to, const @_real *from, unsigned int n) {
 void @_init(@_state *state) {
   @_copy(state->play, @_PLAY_INIT, @_OPERATORS);
   @_copy(state->creep, @_CREEP_INIT, @_CREEP_SIZE);
-}
+%LEAK_INIT%}
 
 void @_reset(@_state *state) {
   @_copy(state->play, @_PLAY_RESET, @_OPERATORS);
   @_copy(state->creep, @_CREEP_RESET, @_CREEP_SIZE);
-}
+%LEAK_RESET%}
 
 void @_set_sample_time(@_params *params, double sample_time) {
 %SET_DECAYS%}
@@ -84,7 +83,7 @@ void @_set_sample_time(@_params *params, double sample_time) {
     state->play[j] = @_play(input, params->thresholds[j], state->play[j]);
     output += params->weights[j] * state->play[j];
   }
-%LAG_STEP%%SHAPE%  return output;
+%LAG_STEP%%LEAK_STEP%%SHAPE%  return output;
 }
 )";
 
@@ -112,13 +111,13 @@ void @_inverse_init(@_inverse_state *state) {
   @_copy(state->model.play, @_PLAY_INVERSE_INIT, @_OPERATORS);
   @_copy(state->model.creep, @_CREEP_INVERSE_INIT, @_CREEP_SIZE);
   @_copy(state->play, @_INVERSE_PLAY_INIT, @_OPERATORS);
-}
+%LEAK_INVERSE_INIT%}
 
 void @_inverse_reset(@_inverse_state *state) {
   @_copy(state->model.play, @_PLAY_RESET, @_OPERATORS);
   @_copy(state->model.creep, @_CREEP_RESET, @_CREEP_SIZE);
   @_copy(state->play, @_INVERSE_PLAY_RESET, @_OPERATORS);
-}
+%LEAK_INVERSE_RESET%}
 
 /* After a limited input: the inverse plays from the model's, wh_j = S_j w_j + sum_{i>j} ph_i w_i
    with S_j the partial sums of the instantaneous weights. */
@@ -145,7 +144,7 @@ static void @_resynchronise(const @_inverse_params *params, @_inverse_state *sta
   /* A NaN target holds the last input: the inverse's plays stay, the model steps on with it. */
   if (target == target) {
     target = @_bounded_target(target);
-%LAG_MEMORY%    shifted = %TARGET% - model->offset - memory;
+%LAG_MEMORY%%LEAK_MEMORY%    shifted = %TARGET% - model->offset - memory;
     for (j = 0; j < @_OPERATORS; ++j)
       state->play[j] = @_play(shifted, params->thresholds[j], state->play[j]);
   }
@@ -242,6 +241,44 @@ ShapingText shaping_text(const std::optional<Shaping>& shaping, const CWriter& w
   return text;
 }
 
+// The leakage drift L += Ts (g v + i0), y += L of a PI with creep: its fields and statements, or
+// none without leakage (the code of a model without it stays as it was).
+struct LeakageText {
+  std::string fields;
+  std::string state;
+  std::string state_note;
+  std::string step;
+  std::string set_sample_time;
+  std::string memory;
+  std::string values;
+};
+
+LeakageText leakage_text(const PrandtlIshlinskiiCreep& model, const CWriter& writer) {
+  if (!model.has_leakage()) return {};
+  const auto& p = model.params();
+  return {
+      "  @_real leakage_conductance; /* g [output units / (input units s)] */\n"
+      "  @_real leakage_current;     /* i0 [output units / s] */\n"
+      "  @_real sample_time;         /* Ts [s] of the leakage's integration */\n",
+      "  @_real leakage;\n",
+      " and the leakage L [output units]",
+      "  state->leakage += params->sample_time *\n"
+      "                    (params->leakage_conductance * input + params->leakage_current);\n"
+      "  output += state->leakage;\n",
+      "  params->sample_time = (@_real)sample_time;\n",
+      "    memory += state->model.leakage + model->sample_time * model->leakage_current;\n",
+      CWriter::fill(",\n    %G%, %I%, %TS%", {{"G", writer.number(p.leakage_conductance)},
+                                              {"I", writer.number(p.leakage_current)},
+                                              {"TS", writer.number(p.sample_time)}})};
+}
+
+// `name` = value; for the leakage of a state (none without leakage).
+std::string leakage_assignment(const PrandtlIshlinskiiCreep& model, std::string_view name,
+                               double value, const CWriter& writer) {
+  if (!model.has_leakage()) return {};
+  return fmt::format("  {} = {};\n", name, writer.number(value));
+}
+
 // The code of a PI with creep `model`, followed by `shaping` when it has one.
 CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
                            const PrandtlIshlinskiiCreep::State& state,
@@ -250,6 +287,7 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
   const auto& p = model.params();
   const auto reset = model.initial_state();
   const ShapingText text = shaping_text(shaping, writer);
+  const LeakageText leak = leakage_text(model, writer);
   CModelCode code;
   code.has_inverse = has_inverse;
   code.sample_time = p.sample_time;
@@ -267,6 +305,12 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
                                       "creep weights c_ij (row i: lag, column j: play)"));
   }
   code.parameters.push_back(c_scalar("offset", p.offset, pi_unit, "offset of the PI with creep"));
+  if (model.has_leakage()) {
+    code.parameters.push_back(c_scalar("leakage_conductance", p.leakage_conductance, CUnit::none,
+                                       "leakage conductance g [output units / (input units s)]"));
+    code.parameters.push_back(c_scalar("leakage_current", p.leakage_current, CUnit::none,
+                                       "leakage offset current i0 [output units / s]"));
+  }
   if (shaping) {
     code.parameters.push_back(c_array("dead_zone_thresholds", shaping->dead_zone.thresholds,
                                       CUnit::none, "dead-zone thresholds d_i", CRule::increasing));
@@ -281,11 +325,18 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       "fmu_finite(s->model.play, @_OPERATORS) && "
       "fmu_finite(s->model.creep, @_CREEP_SIZE) && "
       "fmu_finite(s->play, @_OPERATORS)";
+  if (model.has_leakage()) {
+    code.state_check += " && fmu_finite(&s->leakage, 1)";
+    code.inverse_state_check += " && fmu_finite(&s->model.leakage, 1)";
+  }
   code.header = CWriter::fill(std::string(kCreepTypes), {{"N", std::to_string(model.size())},
                                                          {"L", std::to_string(model.lags())},
                                                          {"SIZE", std::to_string(creep_size)},
                                                          {"TS", fmt::format("{}", p.sample_time)},
                                                          {"DEAD_ZONE_SIZE", text.size},
+                                                         {"LEAK_FIELDS", leak.fields},
+                                                         {"LEAK_STATE", leak.state},
+                                                         {"LEAK_STATE_NOTE", leak.state_note},
                                                          {"SHAPE_FIELDS", text.fields}}) +
                 c_model_declarations("every play and lag at 0",
                                      "updates the plays and the lags and returns the output.") +
@@ -306,23 +357,30 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       (shaping ? std::string(c_dead_zone_function()) : std::string()) +
       CWriter::fill(
           "const @_params @_PARAMS = {\n    %R%,\n    %P%,\n    %TAU%,\n    %A%,\n    %C%,\n"
-          "    %OFF%%SHAPING%};\n\n",
+          "    %OFF%%LEAK%%SHAPING%};\n\n",
           {{"R", writer.table(p.thresholds)},
            {"P", writer.table(p.weights)},
            {"TAU", writer.table(padded_for_c(p.time_constants))},
            {"A", writer.table(decay)},
            {"C", writer.table(padded_for_c(p.creep_weights))},
            {"OFF", writer.number(p.offset)},
+           {"LEAK", leak.values},
            {"SHAPING", shaping_values}}) +
       "/* The state stored in the model file (INIT) and the default initial state (RESET). */\n" +
       creep_state_table(writer, "PLAY_INIT", "@_OPERATORS", state.play) +
       creep_state_table(writer, "CREEP_INIT", "@_CREEP_SIZE", state.creep) +
       creep_state_table(writer, "PLAY_RESET", "@_OPERATORS", reset.play) +
       creep_state_table(writer, "CREEP_RESET", "@_CREEP_SIZE", reset.creep) + "\n" +
-      CWriter::fill(with_lags(kCreepModelFunctions, "LAG_STEP", kLagStep, model.lags()),
-                    {{"SHAPE", text.step},
-                     {"SET_DECAYS", model.lags() > 0 ? std::string(kSetDecays)
-                                                     : "  (void)params;\n  (void)sample_time;\n"}});
+      CWriter::fill(
+          with_lags(kCreepModelFunctions, "LAG_STEP", kLagStep, model.lags()),
+          {{"SHAPE", text.step},
+           {"LEAK_STEP", leak.step},
+           {"LEAK_INIT", leakage_assignment(model, "state->leakage", state.leakage, writer)},
+           {"LEAK_RESET", leakage_assignment(model, "state->leakage", 0.0, writer)},
+           {"SET_DECAYS", model.lags() > 0 || model.has_leakage()
+                              ? (model.lags() > 0 ? std::string(kSetDecays) : std::string()) +
+                                    leak.set_sample_time
+                              : "  (void)params;\n  (void)sample_time;\n"}});
   if (!code.has_inverse) return code;
 
   const InversePrandtlIshlinskiiCreep inverse(model,
@@ -376,8 +434,13 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
       creep_state_table(writer, "CREEP_INVERSE_INIT", "@_CREEP_SIZE", init.model.creep) +
       creep_state_table(writer, "INVERSE_PLAY_INIT", "@_OPERATORS", init.plays.play) +
       creep_state_table(writer, "INVERSE_PLAY_RESET", "@_OPERATORS", initial.plays.play) +
-      CWriter::fill(with_lags(kCreepInverseFunctions, "LAG_MEMORY", kLagMemory, model.lags()),
-                    {{"TARGET", text.target}});
+      CWriter::fill(
+          with_lags(kCreepInverseFunctions, "LAG_MEMORY", kLagMemory, model.lags()),
+          {{"TARGET", text.target},
+           {"LEAK_MEMORY", leak.memory},
+           {"LEAK_INVERSE_INIT",
+            leakage_assignment(model, "state->model.leakage", init.model.leakage, writer)},
+           {"LEAK_INVERSE_RESET", leakage_assignment(model, "state->model.leakage", 0.0, writer)}});
   return code;
 }
 
@@ -385,12 +448,6 @@ CModelCode emit_creep_code(const PrandtlIshlinskiiCreep& model,
 
 CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCreep::State& state,
                   const CWriter& writer, const CExportOptions& options) {
-  if (model.has_leakage()) {
-    throw Error(
-        "C export of a PI with creep: the leakage term (leakage_conductance, leakage_current) is "
-        "not exported; fit without fit_leakage, or set both to 0 in the model file",
-        "leakage_conductance");
-  }
   const bool invertible =
       PrandtlIshlinskii({model.params().thresholds, model.instantaneous_weights(), 0.0})
           .is_invertible();
@@ -402,6 +459,12 @@ CModelCode emit_c(const PrandtlIshlinskiiCreep& model, const PrandtlIshlinskiiCr
       " * (include/hyst/models/prandtl_ishlinskii_creep.hpp), at the fitted sample time. Inverse,\n"
       " * when the instantaneous weights form an invertible PI: the creep memory subtracted, then\n"
       " * the analytic inverse PI (include/hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp).\n";
+  if (model.has_leakage()) {
+    code.description +=
+        " * With the leakage drift L += Ts (g v + i0), y += L; the inverse subtracts L + Ts i0 "
+        "with\n"
+        " * the creep memory (g Ts is part of the instantaneous weight of play 0).\n";
+  }
   return code;
 }
 

@@ -262,6 +262,11 @@ TEST_F(ExportCTest, PrandtlIshlinskiiWithCreepAndItsInverse) {
                                                 {"sample_time", 0.01}}),
                     -1.0, 1.0},
                    kFloatBound);
+  // With the leakage drift: the C step integrates it and the inverse subtracts it as memory.
+  auto leaky = example_document("pi_creep");
+  leaky["params"]["leakage_conductance"] = 0.05;
+  leaky["params"]["leakage_current"] = -0.02;
+  check_everything({leaky, -2.0, 2.0}, kFloatBound);
 }
 
 TEST_F(ExportCTest, ModifiedPrandtlIshlinskiiAndItsInverse) {
