@@ -10,10 +10,12 @@
 #include <benchmark/benchmark.h>
 
 #include "hyst/inverse/inverse_butterfly_strain.hpp"
+#include "hyst/inverse/inverse_butterfly_strain_creep.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_modified_prandtl_ishlinskii_creep.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii_creep.hpp"
 #include "hyst/models/butterfly_strain.hpp"
+#include "hyst/models/butterfly_strain_creep.hpp"
 #include "hyst/models/ikuta_sma.hpp"
 #include "hyst/models/krasnoselskii_pokrovskii.hpp"
 #include "hyst/models/maxwell_slip.hpp"
@@ -150,6 +152,28 @@ void BM_InverseButterflyStrain(benchmark::State& bench) {
                                          {.input_min = -1.0, .input_max = 1.0}));
 }
 
+// The same butterfly with a logarithmic creep of its polarisation: 3 plays, 14 lags (2 per
+// decade from 0.01 s to 1e5 s at Ts = 1 ms), equal weights 0.01 per lag.
+hyst::ButterflyStrainCreep butterfly_strain_creep(std::size_t levels) {
+  hyst::ButterflyStrainCreep::Params p;
+  p.butterfly = butterfly_strain(levels).params();
+  p.creep_thresholds = {0.0, 0.3, 0.6};
+  p.time_constants = hyst::log_spaced_time_constants(0.01, 1e5, 15);
+  p.creep_weights.assign(p.time_constants.size() * p.creep_thresholds.size(), 0.01);
+  p.sample_time = 1e-3;
+  return hyst::ButterflyStrainCreep(p);
+}
+
+void BM_ButterflyStrainCreep(benchmark::State& bench) {
+  run_steps(bench, butterfly_strain_creep(static_cast<std::size_t>(bench.range(0))));
+}
+
+void BM_InverseButterflyStrainCreep(benchmark::State& bench) {
+  run_steps(bench, hyst::InverseButterflyStrainCreep(
+                       butterfly_strain_creep(static_cast<std::size_t>(bench.range(0))),
+                       {.input_min = -1.0, .input_max = 1.0}));
+}
+
 // The seed comparison: 8 unweighted backlash elements, 231 unweighted relays.
 void BM_SeedPi8(benchmark::State& bench) {
   run_steps(bench, hyst::PrandtlIshlinskii({.thresholds = hyst::uniform_thresholds(8, 0.125),
@@ -184,6 +208,8 @@ BENCHMARK(BM_ModifiedPiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_InverseModifiedPiCreep)->Arg(8)->Arg(16);
 BENCHMARK(BM_ButterflyStrain)->Arg(16)->Arg(64);
 BENCHMARK(BM_InverseButterflyStrain)->Arg(16)->Arg(64);
+BENCHMARK(BM_ButterflyStrainCreep)->Arg(16);
+BENCHMARK(BM_InverseButterflyStrainCreep)->Arg(16);
 BENCHMARK(BM_SeedPi8);
 BENCHMARK(BM_SeedPreisach231);
 BENCHMARK(BM_SeedPreisach231RelayByRelay);

@@ -142,3 +142,25 @@ def test_leakage_and_the_logarithmic_law_from_python():
     assert law.model.params["time_constants"][-1] == pytest.approx(1e5)
     with pytest.raises(hyst.Error, match="expected free or logarithmic"):
         hyst.fit("pi_creep", v, y, time=times, creep_law="log")
+
+
+def test_butterfly_strain_with_creep_from_python():
+    # The butterfly example's switching and map with one lag of 0.05 s on v: after a step to
+    # positive saturation the polarisation grows by 0.2 (1 - exp(-t / 0.05)) (hand calculation).
+    params = {"levels": 3, "lower": -1.0, "upper": 1.0,
+              "weights": [0.1, 0.0, 0.1, 0.7, 0.0, 0.1], "field_coefficient": 0.0,
+              "polarisation_coefficients": [1.0, 0.3], "creep_thresholds": [0.0],
+              "time_constants": [0.05], "creep_weights": [0.2], "sample_time": 0.01}
+    model = hyst.Model("butterfly_strain_creep", params)
+    y = model.simulate(np.ones(20))
+    P = 1.0 + 0.2 * (1.0 - np.exp(-np.arange(1, 21) * 0.01 / 0.05))
+    np.testing.assert_allclose(y, P + 0.3 * P**2, rtol=0, atol=1e-13)
+    v = staircase(300)
+    times = np.arange(v.size) * 0.01
+    fitted = hyst.fit("butterfly_strain_creep", v, model.simulate(v), time=times, levels=3, lower=-1.0, upper=1.0,
+                      initial_state="negative_saturation", creep_thresholds=[0.0],
+                      time_constants=[0.05])
+    assert fitted.model.params["sample_time"] == pytest.approx(0.01)
+    assert fitted.report.fit.nrmse_percent < 5.0
+    with pytest.raises(hyst.Error, match="rounds = 0"):
+        hyst.fit("butterfly_strain_creep", v, v, time=times, rounds=0)

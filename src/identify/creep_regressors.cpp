@@ -130,7 +130,7 @@ CreepRegressors creep_regressors(std::span<const FitRecord> records,
 }
 
 Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Index columns,
-                                  double smoothing) {
+                                  double smoothing, Eigen::Index first_creep_column) {
   const auto n = static_cast<Eigen::Index>(regressors.structure.size());
   const auto lags = static_cast<Eigen::Index>(regressors.structure.lags());
   if (lags < 2 || smoothing == 0.0) return Eigen::MatrixXd(0, columns);
@@ -139,8 +139,8 @@ Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Inde
     const auto play = regressors.columns.col(j);
     const double scale = smoothing * (play.array() - play.mean()).matrix().norm();
     for (Eigen::Index i = 0; i + 1 < lags; ++i) {
-      penalty(i * n + j, n + i * n + j) = -scale;
-      penalty(i * n + j, n + (i + 1) * n + j) = scale;
+      penalty(i * n + j, first_creep_column + i * n + j) = -scale;
+      penalty(i * n + j, first_creep_column + (i + 1) * n + j) = scale;
     }
   }
   return penalty;

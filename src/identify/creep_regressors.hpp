@@ -68,9 +68,11 @@ CreepRegressors creep_regressors(std::span<const FitRecord> records,
 // The rows of the logarithmic law's penalty (fit_prandtl_ishlinskii_creep.hpp) for the creep
 // columns of `regressors` (the n play columns first, then one block of n per lag): row (i, j) is
 // smoothing |w_j - mean w_j| (c_{i+1,j} - c_ij), zero on every other column of `columns` (the
-// total column count, >= the creep columns). Empty for fewer than two lags or smoothing 0.
+// total column count, >= the creep columns). The creep blocks start at column
+// `first_creep_column` of the fit (n when the plays come first, as in the regressors). Empty for
+// fewer than two lags or smoothing 0.
 Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Index columns,
-                                  double smoothing);
+                                  double smoothing, Eigen::Index first_creep_column);
 
 // The state a record starts from: virgin, or the periodic steady state of its input.
 template <class Model>

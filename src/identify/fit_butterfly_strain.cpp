@@ -22,12 +22,17 @@
 #include "hyst/data/leakage.hpp"
 #include "hyst/identify/error_metrics.hpp"
 #include "hyst/models/preisach_relay_grid.hpp"
+#include "strain_map_fit.hpp"
 #include "weight_fit.hpp"
 
 namespace hyst {
 namespace {
 // Named, so that a unity build can join this file with the other fits.
 namespace butterfly_fit {
+
+using detail::fit_map;
+using detail::map_columns;
+using detail::MapFit;
 
 using Clock = std::chrono::steady_clock;
 constexpr std::string_view kFit = "butterfly strain fit";
@@ -158,40 +163,6 @@ Design design_of(std::span<const RecordView> records, const Preisach::Params& gr
     }
   }
   return design;
-}
-
-// Columns [1, v, P, P^2, ..., P^N] of the map (v only with the field term).
-Eigen::MatrixXd map_columns(const Eigen::VectorXd& input, const Eigen::VectorXd& polarisation,
-                            std::size_t degree, bool field_term) {
-  const auto first = field_term ? 2 : 1;
-  Eigen::MatrixXd X(input.size(), first + static_cast<Eigen::Index>(degree));
-  X.col(0).setOnes();
-  if (field_term) X.col(1) = input;
-  Eigen::VectorXd power = Eigen::VectorXd::Ones(input.size());
-  for (std::size_t n = 0; n < degree; ++n) {
-    power.array() *= polarisation.array();
-    X.col(first + static_cast<Eigen::Index>(n)) = power;
-  }
-  return X;
-}
-
-// The map's coefficients [y_off, d, q_1 .. q_N] by linear least squares (d = 0 without the field
-// term), and the residual norm.
-struct MapFit {
-  Eigen::VectorXd coefficients;
-  double residual = 0.0;
-};
-MapFit fit_map(const Eigen::VectorXd& input, const Eigen::VectorXd& polarisation,
-               const Eigen::VectorXd& output, std::size_t degree, bool field_term) {
-  const Eigen::MatrixXd X = map_columns(input, polarisation, degree, field_term);
-  const Eigen::VectorXd solved = X.colPivHouseholderQr().solve(output);
-  MapFit fit{Eigen::VectorXd::Zero(2 + static_cast<Eigen::Index>(degree)),
-             (X * solved - output).norm()};
-  fit.coefficients[0] = solved[0];
-  if (field_term) fit.coefficients[1] = solved[1];
-  fit.coefficients.tail(static_cast<Eigen::Index>(degree)) =
-      solved.tail(static_cast<Eigen::Index>(degree));
-  return fit;
 }
 
 // Residuals y_model[k] - y[k] of the direct form and the scale term (F0 - 1) sigma sqrt(K), with

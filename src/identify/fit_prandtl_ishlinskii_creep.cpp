@@ -87,7 +87,8 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
       eps * regressors.columns.col(0);
   const Eigen::MatrixXd penalty =
       options.creep_law == CreepLaw::logarithmic
-          ? detail::creep_law_penalty(regressors, columns, options.law_smoothing.value_or(0.0))
+          ? detail::creep_law_penalty(regressors, columns, options.law_smoothing.value_or(0.0),
+                                      static_cast<Eigen::Index>(n))
           : Eigen::MatrixXd(0, columns);
   auto solution =
       detail::nnls_with_offset(std::move(regressors.columns), b, options.fit_offset, penalty);

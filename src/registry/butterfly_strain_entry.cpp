@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "butterfly_fields.hpp"
 #include "hyst/identify/fit_butterfly_strain.hpp"
 #include "hyst/inverse/inverse_butterfly_strain.hpp"
 #include "hyst/models/butterfly_strain.hpp"
@@ -16,26 +17,8 @@
 namespace hyst::detail {
 namespace {
 
-FieldTable<Preisach::Params> polarisation_table() {
-  using Q = Preisach::Params;
-  return FieldTable<Q>()
-      .add_all(&Q::everett, relay_grid_everett_table("P units"))
-      .add("polarisation_offset", &Q::offset, "P units", "offset of the polarisation",
-           Presence::optional)
-      .add("initial_state", &Q::initial_state, preisach_initial_state_from_string,
-           "negative_saturation, positive_saturation or demagnetised", Presence::optional);
-}
-
 struct ButterflyCodec : CodecOf<ButterflyStrain, "butterfly_strain"> {
-  static FieldTable<P> parameters() {
-    return FieldTable<P>()
-        .add_all(&P::polarisation, polarisation_table())
-        .add("field_coefficient", &P::field_coefficient, "output / input units",
-             "d of the linear term in the input", Presence::optional)
-        .add("polarisation_coefficients", &P::polarisation_coefficients, "output units / P units^n",
-             "q_1 .. q_N of the polynomial in P")
-        .add("offset", &P::offset, "output units", "y_off", Presence::optional);
-  }
+  static FieldTable<P> parameters() { return butterfly_strain_fields(); }
   static nlohmann::json state_to_json(const Model&, const Model::State& state) {
     return preisach_state_to_json(state);
   }
@@ -71,17 +54,6 @@ struct ButterflyCodec : CodecOf<ButterflyStrain, "butterfly_strain"> {
         InverseButterflyStrain(model, {lo, hi}), state, &preisach_state_to_json);
   }
 };
-
-FieldTable<ButterflyFitOptions> butterfly_fit_option_table() {
-  using O = ButterflyFitOptions;
-  return add_grid_options(FieldTable<O>(Presence::optional),
-                          "threshold levels of the polarisation's relay grid")
-      .add("degree", &O::degree, "", "degree N of the polynomial in P")
-      .add("fit_field_term", &O::fit_field_term, "", "fit the linear term d v")
-      .add("initial_state", &O::start, butterfly_fit_start_from_string,
-           "periodic (the record is one period in steady state) or a Preisach initial state")
-      .add("max_iterations", &O::max_iterations, "", "Levenberg-Marquardt iterations");
-}
 
 // The two-stage fit's options: the direct form's and the leakage of the measured polarisation.
 FieldTable<ButterflyFitOptions> butterfly_two_stage_option_table() {

@@ -17,6 +17,7 @@ ModelEntry rate_dependent_prandtl_ishlinskii_entry();
 ModelEntry prandtl_ishlinskii_creep_entry();
 ModelEntry modified_prandtl_ishlinskii_creep_entry();
 ModelEntry butterfly_strain_entry();
+ModelEntry butterfly_strain_creep_entry();
 ModelEntry bouc_wen_entry();
 ModelEntry bouc_wen_oscillator_entry();
 ModelEntry duhem_entry();

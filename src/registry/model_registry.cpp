@@ -26,6 +26,7 @@ const ModelRegistry& ModelRegistry::builtin() {
     r.add(detail::prandtl_ishlinskii_creep_entry());
     r.add(detail::modified_prandtl_ishlinskii_creep_entry());
     r.add(detail::butterfly_strain_entry());
+    r.add(detail::butterfly_strain_creep_entry());
     r.add(detail::bouc_wen_entry());
     r.add(detail::bouc_wen_oscillator_entry());
     r.add(detail::duhem_entry());

@@ -584,7 +584,7 @@ void add_fit_command(CLI::App& app) {
                       "Several measurement tables N,M,... of an aixACCT export, fitted together "
                       "as one model (one actuator at several rates), each at the sample time of "
                       "its 'Time' column; for the models with a fit of several records "
-                      "(pi_creep, modified_pi_creep, butterfly_strain)");
+                      "(pi_creep, modified_pi_creep, butterfly_strain, butterfly_strain_creep)");
   command
       ->add_option("--sample-time", options->sample_time,
                    "Sample time of --data [s] for files without a time column (the fit option "
