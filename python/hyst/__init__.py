@@ -27,6 +27,7 @@ from ._signatures import add_signatures as _add_signatures
 # The fits that return a model and its report answer with a FitResult (still a tuple).
 _FITS = ("fit", "fit_records", "fit_prandtl_ishlinskii", "fit_preisach_forcs",
          "fit_butterfly_strain_records", "fit_butterfly_strain_with_polarisation",
+         "fit_butterfly_strain_creep_with_polarisation",
          "fit_state_space", "fit_hysteretic_lfr", "fit_hammerstein")
 
 

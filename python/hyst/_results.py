@@ -2,13 +2,16 @@
 
 import html
 
+from . import _core
+
 
 class FitResult(tuple):
     """What a fit returns: the fitted `model`, the `state` it starts from and the fit `report`.
 
     It is the tuple the fit returned before, so `model, report = hyst.fit(...)` (and `model,
     state, report = hyst.fit_prandtl_ishlinskii(...)`) unpack as they always did. For the
-    registry's fits the state is the model file's state, `model.state`.
+    registry's fits the state is the model file's state, `model.state`. The fits with measured
+    polarisation return further reports after the model's (`report` is the model's own).
     """
 
     __slots__ = ()
@@ -19,11 +22,15 @@ class FitResult(tuple):
 
     @property
     def state(self):
-        return self[1] if len(self) == 3 else self[0].state
+        return self[1] if len(self) == 3 and not self._reports_second() else self[0].state
 
     @property
     def report(self):
-        return self[-1]
+        # (model, report, ...more reports) or (model, state, report)
+        return self[1] if self._reports_second() else self[-1]
+
+    def _reports_second(self):
+        return isinstance(self[1], _core.FitReport)
 
     def _rows(self):
         report = self.report

@@ -1,11 +1,12 @@
-// hyst.fit_butterfly_strain_records and hyst.fit_butterfly_strain_with_polarisation: the
-// butterfly strain fits beyond the registry's one-record hyst.fit
-// (hyst/registry/butterfly_fit.hpp).
+// hyst.fit_butterfly_strain_records, hyst.fit_butterfly_strain_with_polarisation and
+// hyst.fit_butterfly_strain_creep_with_polarisation: the butterfly strain fits beyond the
+// registry's hyst.fit (hyst/registry/butterfly_fit.hpp, butterfly_creep_fit.hpp).
 
 #include <optional>
 #include <utility>
 
 #include "bindings.hpp"
+#include "hyst/registry/butterfly_creep_fit.hpp"
 #include "hyst/registry/butterfly_fit.hpp"
 
 namespace hyst::python {
@@ -53,6 +54,28 @@ void bind_butterfly(py::module_& module) {
       "leakage conductance g). Keyword options as for fit_butterfly_strain_records, and "
       "fit_leakage (False) with sample_time (1.0 s): fit the leakage charge g * integral(v dt) "
       "of the measured polarisation too (g >= 0), which the maps then leave out.");
+  module.def(
+      "fit_butterfly_strain_creep_with_polarisation",
+      [](const InputArray& input, const InputArray& polarisation, const InputArray& output,
+         const py::kwargs& options) {
+        const auto options_json = python_to_json(options, "");
+        const auto v = as_span(input, "input");
+        const auto p = as_span(polarisation, "polarisation");
+        const auto y = as_span(output, "output");
+        std::optional<ButterflyCreepTwoStageModelFit> fit;
+        {
+          py::gil_scoped_release release;
+          fit.emplace(fit_butterfly_strain_creep_model_with_polarisation(v, p, y, options_json));
+        }
+        return py::make_tuple(std::move(fit->model), std::move(fit->report),
+                              std::move(fit->polarisation_report));
+      },
+      "input"_a, "polarisation"_a, "output"_a,
+      "The butterfly strain with creep fit with measured polarisation: the polarisation by one "
+      "NNLS over relay, creep and (fit_leakage=True) leakage weights, then the strain map on the "
+      "model's polarisation without the leakage charge; returns (Model, FitReport of the "
+      "strain, FitReport of the measured polarisation). Keyword options as for "
+      "hyst.fit('butterfly_strain_creep', ...), with sample_time [s] and fit_leakage (False).");
 }
 
 }  // namespace hyst::python

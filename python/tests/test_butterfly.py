@@ -87,6 +87,24 @@ def test_two_stage_fit_separates_a_leakage_charge():
     assert hyst.data.leakage_conductance(1e8, 100.0) == pytest.approx(0.01, rel=1e-15)
 
 
+def test_two_stage_fits_name_the_model_report():
+    v, y, _ = _two_stage_record()
+    P = hyst.Model("preisach", _equal_weight_grid(8)).simulate(v)
+    fitted = hyst.fit_butterfly_strain_with_polarisation(
+        v, P, y, levels=8, lower=-1.0, upper=1.0, initial_state="negative_saturation")
+    assert fitted.report is fitted[1] and fitted.model.name == "butterfly_strain"
+    # With creep: the polarisation is matched by relays and lags, the map by the relays alone.
+    creep = hyst.fit_butterfly_strain_creep_with_polarisation(
+        v, P, y, levels=8, lower=-1.0, upper=1.0, initial_state="negative_saturation",
+        sample_time=0.01, creep_law="free", lags=2, validate_fraction=0.25)
+    model, report, p_report = creep
+    assert creep.report is report and model.name == "butterfly_strain_creep"
+    assert p_report.fit.rmse < 1e-6 and report.fit.rmse < 1e-5
+    assert report.validation is not None and report.validation.samples == len(v) // 4
+    with pytest.raises(hyst.Error, match="needs the measured polarisation"):
+        hyst.fit("butterfly_strain_creep", v, y, sample_time=0.01, fit_leakage=True)
+
+
 def test_records_fit_shares_one_model_and_names_bad_records():
     v, y, _ = _two_stage_record()
     model, report = hyst.fit_butterfly_strain_records([(v, y), (0.8 * v, y)], levels=6)

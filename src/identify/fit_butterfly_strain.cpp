@@ -13,6 +13,7 @@
 #include <Eigen/QR>
 
 #include "../core/detail/enum_names.hpp"
+#include "butterfly_relay_design.hpp"
 #include "detail/convergence.hpp"
 #include "detail/multistart_driver.hpp"
 #include "detail/multistart_fit.hpp"
@@ -37,7 +38,6 @@ using detail::MapFit;
 using Clock = std::chrono::steady_clock;
 constexpr std::string_view kFit = "butterfly strain fit";
 constexpr std::size_t kScreeningIterations = 10;  // per start
-constexpr std::size_t kDefaultLevels = 16;        // of the relay grid, when the record allows
 constexpr std::size_t kRefinedStarts = 3;         // screened starts continued
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -61,63 +61,13 @@ void check_options(const ButterflyFitOptions& options) {
   }
 }
 
-// One record as the fit sees it: its whole input (for the periodic start), the compared part of
-// it and the measured output of that part.
-struct RecordView {
-  std::span<const double> whole_input;
-  std::span<const double> input;
-  std::span<const double> output;
-};
-
-// `levels`, or when 0 the most levels up to kDefaultLevels whose relays number at most half the
-// `samples`, at least 2.
-std::size_t grid_levels(std::size_t levels, std::size_t samples) {
-  if (levels > 0) return levels;
-  std::size_t automatic = kDefaultLevels;
-  while (automatic > 2 && 2 * preisach_relay_count(automatic) > samples)
-    --automatic;
-  return automatic;
-}
-
-// The relay grid with unit weights on the fit's input range.
-Preisach::Params unit_grid(std::span<const RecordView> records,
-                           const ButterflyFitOptions& options) {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  std::size_t samples = 0;
-  for (const auto& record : records) {
-    samples += record.input.size();
-    const auto [min, max] = std::minmax_element(record.input.begin(), record.input.end());
-    lo = std::min(lo, *min);
-    hi = std::max(hi, *max);
-  }
-  Preisach::Params params;
-  params.everett.levels = grid_levels(options.levels, samples);
-  params.everett.lower = options.lower.value_or(lo);
-  params.everett.upper = options.upper.value_or(hi);
-  if (!(params.everett.lower < params.everett.upper)) {
-    throw Error(fmt::format("{}: the input range [{}, {}] is empty (lower must be < upper; a "
-                            "constant input cannot switch a polarisation)",
-                            kFit, params.everett.lower, params.everett.upper),
-                "upper");
-  }
-  params.everett.weights = uniform_relay_weights(params.everett.levels, 1.0);
-  return params;
-}
-
-PreisachInitialState preisach_start(ButterflyFitStart start) {
-  if (start == ButterflyFitStart::positive_saturation) {
-    return PreisachInitialState::positive_saturation;
-  }
-  return start == ButterflyFitStart::demagnetised ? PreisachInitialState::demagnetised
-                                                  : PreisachInitialState::negative_saturation;
-}
+using RecordView = detail::ButterflyRecordView;
 
 // The state a record starts from, for any Preisach-based model with periodic_state-like replay.
 template <class Model>
 typename Model::State start_state(const Model& model, std::span<const double> whole_input,
                                   ButterflyFitStart start) {
-  auto state = model.make_state(preisach_start(start));
+  auto state = model.make_state(detail::butterfly_preisach_start(start));
   if (start == ButterflyFitStart::periodic) {
     for (double v : whole_input)
       model.step(state, v);
@@ -129,41 +79,7 @@ ButterflyStrain::State start_state(const ButterflyStrain& model,
   return start_state(model.polarisation_model(), whole_input, start);
 }
 
-// Every record's relay states s_r[k] = +-1, stacked, with the inputs and outputs.
-struct Design {
-  Eigen::MatrixXd relays;
-  Eigen::VectorXd input;
-  Eigen::VectorXd output;
-};
-
-Design design_of(std::span<const RecordView> records, const Preisach::Params& grid,
-                 ButterflyFitStart start) {
-  auto params = grid;
-  params.initial_state = preisach_start(start);
-  const PreisachRelayGrid relays(params);
-  Eigen::Index rows = 0;
-  for (const auto& record : records)
-    rows += static_cast<Eigen::Index>(record.input.size());
-  const auto columns = static_cast<Eigen::Index>(relays.relay_count());
-  Design design{detail::regressor_matrix(rows, columns, kFit), Eigen::VectorXd(rows),
-                Eigen::VectorXd(rows)};
-  Eigen::Index row = 0;
-  for (const auto& record : records) {
-    auto state = relays.initial_state();
-    if (start == ButterflyFitStart::periodic) {
-      for (double v : record.whole_input)
-        relays.step(state, v);
-    }
-    for (std::size_t k = 0; k < record.input.size(); ++k, ++row) {
-      relays.step(state, record.input[k]);
-      for (Eigen::Index r = 0; r < columns; ++r)
-        design.relays(row, r) = state.relays[static_cast<std::size_t>(r)];
-      design.input[row] = record.input[k];
-      design.output[row] = record.output[k];
-    }
-  }
-  return design;
-}
+using Design = detail::ButterflyRelayDesign;
 
 // Residuals y_model[k] - y[k] of the direct form and the scale term (F0 - 1) sigma sqrt(K), with
 // the analytic Jacobian. Blocks: relay weights mu (m), map [y_off, d, q_1 .. q_N].
@@ -307,7 +223,7 @@ ButterflyStrain model_of(const Preisach::Params& grid, const Eigen::VectorXd& mu
                          const Eigen::VectorXd& map, ButterflyFitStart start) {
   ButterflyStrain::Params params;
   params.polarisation = grid;
-  params.polarisation.initial_state = preisach_start(start);
+  params.polarisation.initial_state = detail::butterfly_preisach_start(start);
   params.polarisation.everett.weights.assign(mu.data(), mu.data() + mu.size());
   params.offset = map[0];
   params.field_coefficient = map[1];
@@ -333,8 +249,8 @@ void score(FitReport& report, const ButterflyStrain& model, std::span<const Reco
 
 ButterflyStrain solve_direct(std::span<const RecordView> records,
                              const ButterflyFitOptions& options, FitReport& report) {
-  const Preisach::Params grid = unit_grid(records, options);
-  const Design design = design_of(records, grid, options.start);
+  const Preisach::Params grid = detail::butterfly_unit_grid(records, options);
+  const Design design = detail::butterfly_relay_design(records, grid, options.start);
   const auto m = design.relays.cols();
   const auto unknowns = static_cast<std::size_t>(m) + options.degree + 2;
   if (static_cast<std::size_t>(design.output.size()) < unknowns + 2) {
@@ -442,18 +358,15 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
                                     const ButterflyFitOptions& options) {
   const auto begin = Clock::now();
   check_options(options);
-  if (polarisation.size() != input.size()) {
-    throw Error(fmt::format("{}: {} polarisation samples for {} input samples", kFit,
-                            polarisation.size(), input.size()),
-                "polarisation");
-  }
-  const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
-  const auto p_parts = detail::split_record(input, polarisation, options.validate_fraction,
-                                            "butterfly strain fit (polarisation)", 2);
+  const auto split =
+      detail::split_with_polarisation(input, polarisation, output, options.validate_fraction, kFit);
+  const auto& parts = split.strain;
+  const auto& p_parts = split.polarisation;
   const RecordView p_record{input, parts.fit_input, p_parts.fit_output};
   const RecordView record{input, parts.fit_input, parts.fit_output};
-  const Preisach::Params grid = unit_grid(std::span(&p_record, 1), options);
-  const Design design = design_of(std::span(&p_record, 1), grid, options.start);
+  const Preisach::Params grid = detail::butterfly_unit_grid(std::span(&p_record, 1), options);
+  const Design design =
+      detail::butterfly_relay_design(std::span(&p_record, 1), grid, options.start);
 
   // Stage 1: P(v) by NNLS with a free P offset, and the leakage charge's conductance.
   const auto relay_count = design.relays.cols();
@@ -471,7 +384,7 @@ ButterflyTwoStageFit fit_two_stages(std::span<const double> input,
   const double conductance = options.fit_leakage ? stage1.x[relay_count] : 0.0;
   ButterflyStrain::Params params;
   params.polarisation = grid;
-  params.polarisation.initial_state = preisach_start(options.start);
+  params.polarisation.initial_state = detail::butterfly_preisach_start(options.start);
   params.polarisation.everett.weights.assign(stage1.x.data(), stage1.x.data() + relay_count);
   params.polarisation.offset = stage1.offset;
   const Preisach polarisation_model(params.polarisation);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <Eigen/Core>
 
+#include "butterfly_relay_design.hpp"
 #include "creep_regressors.hpp"
 #include "hyst/core/error.hpp"
 #include "hyst/core/simulate.hpp"
@@ -40,9 +41,15 @@ void check_options(const ButterflyCreepFitOptions& options) {
         fmt::format("{}: law_smoothing = {} must be finite and in [0, 1e6]", kFit, *smoothing),
         "law_smoothing");
   }
-  if (options.switching.fit_leakage) {
+}
+
+// The fits from the strain alone cannot see a leakage charge.
+void check_direct(const ButterflyCreepFitOptions& options) {
+  check_options(options);
+  if (options.fit_leakage || options.switching.fit_leakage) {
     throw Error(fmt::format("{}: a leakage charge strains nothing and cannot be fitted from the "
-                            "strain (fit the polarisation with pi_creep and fit_leakage)",
+                            "strain: it needs the measured polarisation (Python "
+                            "hyst.fit_butterfly_strain_creep_with_polarisation)",
                             kFit),
                 "fit_leakage");
   }
@@ -177,19 +184,16 @@ ButterflyStrainCreep::State start_of(const ButterflyStrainCreep& model, const Cr
   return periodic ? model.periodic_state(record.whole_input) : model.initial_state();
 }
 
-// Steps 2 and the assembly of the model, after step 1 gave `switching` (switching part and
-// map); `report` gets the method, costs and the fit metrics over every record.
-ButterflyStrainCreep fit_creep(std::span<const CreepRecord> records,
-                               const ButterflyStrain& switching, const FitReport& switching_report,
-                               const ButterflyCreepFitOptions& options, FitReport& report) {
-  const bool periodic = periodic_start(options);
+// The creep structure (thresholds and time constants from the options and the records) and
+// the regressors its law's penalty is scaled by.
+detail::CreepRegressors creep_structure(std::span<const CreepRecord> records,
+                                        const ButterflyCreepFitOptions& options) {
   std::vector<FitRecord> fitted;
   std::vector<double> sample_times;
   for (const auto& record : records) {
     fitted.push_back({record.input, record.output});
     sample_times.push_back(record.sample_time);
   }
-  // The creep structure (thresholds and time constants) and each record's lags from its start.
   detail::CreepStructureOptions structure_options;
   structure_options.operators = options.creep_operators;
   structure_options.thresholds = options.creep_thresholds;
@@ -197,17 +201,48 @@ ButterflyStrainCreep fit_creep(std::span<const CreepRecord> records,
   structure_options.time_constants = options.time_constants;
   structure_options.sample_time = sample_times.front();
   structure_options.sample_times = sample_times;
-  structure_options.initial_state =
-      periodic ? PiFitOptions::InitialState::periodic : PiFitOptions::InitialState::virgin;
+  structure_options.initial_state = periodic_start(options) ? PiFitOptions::InitialState::periodic
+                                                            : PiFitOptions::InitialState::virgin;
   structure_options.creep_law = options.creep_law;
   structure_options.lags_per_decade = options.lags_per_decade;
   structure_options.longest_time_constant = options.longest_time_constant;
-  const auto regressors = detail::creep_regressors(fitted, structure_options, kFit);
-  const PrandtlIshlinskiiCreep& structure = regressors.structure;
-  const auto creep_columns = static_cast<Eigen::Index>(structure.size() * structure.lags());
-  if (creep_columns == 0) {
+  auto regressors = detail::creep_regressors(fitted, structure_options, kFit);
+  if (regressors.structure.lags() == 0) {
     throw Error(fmt::format("{}: no creep lags (give time_constants or lags >= 1)", kFit), "lags");
   }
+  return regressors;
+}
+
+// Z: the lags z_ij of every record's samples (row-major per row, as the creep weights), each
+// record at its sample time from its start.
+Eigen::MatrixXd lag_columns(std::span<const CreepRecord> records,
+                            const PrandtlIshlinskiiCreep& structure, bool periodic) {
+  Eigen::Index rows = 0;
+  for (const auto& record : records)
+    rows += static_cast<Eigen::Index>(record.input.size());
+  const auto columns = static_cast<Eigen::Index>(structure.size() * structure.lags());
+  Eigen::MatrixXd Z(rows, columns);
+  Eigen::Index row = 0;
+  for (const auto& record : records) {
+    const auto lags = structure.at_sample_time(record.sample_time);
+    auto state = periodic ? lags.periodic_state(record.whole_input) : lags.initial_state();
+    for (double v : record.input) {
+      lags.step(state, v);
+      Z.row(row++) = Eigen::Map<const Eigen::RowVectorXd>(state.creep.data(), columns);
+    }
+  }
+  return Z;
+}
+
+// Steps 2 and the assembly of the model, after step 1 gave `switching` (switching part and
+// map); `report` gets the method, costs and the fit metrics over every record.
+ButterflyStrainCreep fit_creep(std::span<const CreepRecord> records,
+                               const ButterflyStrain& switching, const FitReport& switching_report,
+                               const ButterflyCreepFitOptions& options, FitReport& report) {
+  const bool periodic = periodic_start(options);
+  const auto regressors = creep_structure(records, options);
+  const PrandtlIshlinskiiCreep& structure = regressors.structure;
+  const auto creep_columns = static_cast<Eigen::Index>(structure.size() * structure.lags());
   Eigen::Index rows = 0;
   for (const auto& record : records)
     rows += static_cast<Eigen::Index>(record.input.size());
@@ -216,22 +251,17 @@ ButterflyStrainCreep fit_creep(std::span<const CreepRecord> records,
   problem.input.resize(rows);
   problem.output.resize(rows);
   problem.switching.resize(rows);
-  problem.lags.resize(rows, creep_columns);
+  problem.lags = lag_columns(records, structure, periodic);
   const auto& polarisation_model = switching.polarisation_model();
   Eigen::Index row = 0;
   for (const auto& record : records) {
-    const auto lags = structure.at_sample_time(record.sample_time);
     auto p_state =
         periodic ? switching.periodic_state(record.whole_input) : switching.initial_state();
-    auto c_state = periodic ? lags.periodic_state(record.whole_input) : lags.initial_state();
     for (std::size_t k = 0; k < record.input.size(); ++k, ++row) {
       const double v = record.input[k];
       problem.input[row] = v;
       problem.output[row] = record.output[k];
       problem.switching[row] = polarisation_model.step(p_state, v);
-      lags.step(c_state, v);
-      problem.lags.row(row) =
-          Eigen::Map<const Eigen::RowVectorXd>(c_state.creep.data(), creep_columns);
     }
   }
   problem.penalty = options.creep_law == CreepLaw::logarithmic
@@ -273,7 +303,7 @@ ButterflyStrainCreep fit_creep(std::span<const CreepRecord> records,
   params.creep_thresholds = structure.params().thresholds;
   params.time_constants = structure.params().time_constants;
   params.creep_weights.assign(creep.weights.data(), creep.weights.data() + creep.weights.size());
-  params.sample_time = sample_times.front();
+  params.sample_time = records.front().sample_time;
   ButterflyStrainCreep model(std::move(params));
 
   report.model = "butterfly_strain_creep";
@@ -308,7 +338,7 @@ ButterflyFitOptions switching_options_of(const ButterflyCreepFitOptions& options
 ButterflyCreepFit fit_one(std::span<const double> input, std::span<const double> output,
                           const ButterflyCreepFitOptions& options) {
   const auto begin = Clock::now();
-  check_options(options);
+  check_direct(options);
   // Step 1 (it checks the data and options of the switching part).
   const auto switching = fit_butterfly_strain(input, output, switching_options_of(options));
   const auto parts = detail::split_record(input, output, options.validate_fraction, kFit, 2);
@@ -329,7 +359,7 @@ ButterflyCreepFit fit_one(std::span<const double> input, std::span<const double>
 ButterflyCreepFit fit_many(std::span<const FitRecord> records,
                            const ButterflyCreepFitOptions& options) {
   const auto begin = Clock::now();
-  check_options(options);
+  check_direct(options);
   detail::check_several_records(records, options.validate_fraction, kFit);
   if (!options.sample_times.empty() && options.sample_times.size() != records.size()) {
     throw Error(fmt::format("{}: {} sample times for {} records", kFit, options.sample_times.size(),
@@ -351,6 +381,166 @@ ButterflyCreepFit fit_many(std::span<const FitRecord> records,
   return {std::move(model), std::move(initial_state), std::move(report)};
 }
 
+// The measured polarisation P_m = P_s + C + L of `model` from `state` (advanced) over `input`.
+std::vector<double> measured_polarisation(const ButterflyStrainCreep& model,
+                                          ButterflyStrainCreep::State& state,
+                                          std::span<const double> input) {
+  std::vector<double> P;
+  P.reserve(input.size());
+  for (double v : input) {
+    model.step(state, v);
+    P.push_back(model.measured_polarisation(state));
+  }
+  return P;
+}
+
+// The leakage's columns: the charge sum Ts v (g >= 0) and the time sum Ts twice (+ and -: i0 has
+// either sign), from the record's start, as the model integrates them.
+Eigen::MatrixXd leakage_columns(std::span<const double> input, double sample_time) {
+  Eigen::MatrixXd columns(static_cast<Eigen::Index>(input.size()), 3);
+  double charge = 0.0;
+  double time = 0.0;
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    charge += sample_time * input[k];
+    time += sample_time;
+    columns.row(static_cast<Eigen::Index>(k)) << charge, time, -time;
+  }
+  return columns;
+}
+
+ButterflyCreepTwoStageFit fit_with_polarisation(std::span<const double> input,
+                                                std::span<const double> polarisation,
+                                                std::span<const double> output,
+                                                const ButterflyCreepFitOptions& options) {
+  const auto begin = Clock::now();
+  check_options(options);
+  const auto split =
+      detail::split_with_polarisation(input, polarisation, output, options.validate_fraction, kFit);
+  const auto& parts = split.strain;
+  const auto& p_parts = split.polarisation;
+  const bool periodic = periodic_start(options);
+  const detail::ButterflyRecordView p_view{input, parts.fit_input, p_parts.fit_output};
+  const Preisach::Params grid =
+      detail::butterfly_unit_grid(std::span(&p_view, 1), options.switching);
+  const auto design =
+      detail::butterfly_relay_design(std::span(&p_view, 1), grid, options.switching.start);
+  const CreepRecord p_record{input, parts.fit_input, p_parts.fit_output, options.sample_time};
+  const auto regressors = creep_structure(std::span(&p_record, 1), options);
+  const PrandtlIshlinskiiCreep& structure = regressors.structure;
+  const Eigen::MatrixXd Z = lag_columns(std::span(&p_record, 1), structure, periodic);
+
+  // Stage 1: P_m = offset + relays mu + Z c (+ g Q + i0 t) by one NNLS, the law's penalty on c.
+  const Eigen::Index m = design.relays.cols();
+  const Eigen::Index nz = Z.cols();
+  const Eigen::Index leak = options.fit_leakage ? 3 : 0;
+  const Eigen::Index rows = Z.rows();
+  if (rows < m + nz + leak + 2) {
+    throw Error(
+        fmt::format("{}: {} samples, fewer than unknowns + 2 = {}", kFit, rows, m + nz + leak + 2));
+  }
+  Eigen::MatrixXd columns(rows, m + nz + leak);
+  columns << design.relays, Z;
+  if (options.fit_leakage) {
+    columns.rightCols(3) = leakage_columns(parts.fit_input, options.sample_time);
+  }
+  const auto solve_stage1 = [&](Eigen::Index fitted_rows, double smoothing) {
+    const double share = std::sqrt(static_cast<double>(fitted_rows) / static_cast<double>(rows));
+    const Eigen::MatrixXd penalty =
+        options.creep_law == CreepLaw::logarithmic
+            ? Eigen::MatrixXd(share *
+                              detail::creep_law_penalty(regressors, columns.cols(), smoothing, m))
+            : Eigen::MatrixXd(0, columns.cols());
+    return detail::nnls_with_offset(columns.topRows(fitted_rows), design.output.head(fitted_rows),
+                                    true, penalty);
+  };
+  std::string p_method = "nnls (Lawson-Hanson) on relay, creep";
+  p_method += options.fit_leakage ? " and leakage weights" : " weights";
+  double smoothing = options.law_smoothing.value_or(0.1);
+  if (options.creep_law == CreepLaw::logarithmic && !options.law_smoothing) {
+    const Eigen::Index cut = rows * 7 / 10;
+    double best_rmse = std::numeric_limits<double>::infinity();
+    for (const double candidate : kSmoothings) {
+      const auto solved = solve_stage1(cut, candidate);
+      const Eigen::VectorXd predicted = columns.bottomRows(rows - cut) * solved.x +
+                                        Eigen::VectorXd::Constant(rows - cut, solved.offset);
+      const double rmse = std::sqrt((predicted - design.output.tail(rows - cut)).squaredNorm() /
+                                    static_cast<double>(rows - cut));
+      if (rmse < best_rmse) {
+        best_rmse = rmse;
+        smoothing = candidate;
+      }
+    }
+    p_method += fmt::format(
+        ", logarithmic creep law (smoothing {} chosen by forward validation on the last 30 % of "
+        "the polarisation: RMSE {:.4g})",
+        smoothing, best_rmse);
+  }
+  const auto stage1 = solve_stage1(rows, smoothing);
+
+  // Stage 2: the map on the model's polarisation without the leakage charge.
+  const Eigen::VectorXd P_model = design.relays * stage1.x.head(m) + Z * stage1.x.segment(m, nz) +
+                                  Eigen::VectorXd::Constant(rows, stage1.offset);
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(parts.fit_output.data(), rows);
+  const auto map = detail::fit_map(design.input, P_model, y, options.switching.degree,
+                                   options.switching.fit_field_term);
+
+  ButterflyStrainCreep::Params params;
+  params.butterfly.polarisation = grid;
+  params.butterfly.polarisation.initial_state =
+      detail::butterfly_preisach_start(options.switching.start);
+  params.butterfly.polarisation.everett.weights.assign(stage1.x.data(), stage1.x.data() + m);
+  params.butterfly.polarisation.offset = stage1.offset;
+  params.butterfly.offset = map.coefficients[0];
+  params.butterfly.field_coefficient = map.coefficients[1];
+  params.butterfly.polarisation_coefficients.assign(
+      map.coefficients.data() + 2, map.coefficients.data() + map.coefficients.size());
+  params.creep_thresholds = structure.params().thresholds;
+  params.time_constants = structure.params().time_constants;
+  params.creep_weights.assign(stage1.x.data() + m, stage1.x.data() + m + nz);
+  params.sample_time = options.sample_time;
+  if (options.fit_leakage) {
+    params.leakage_conductance = stage1.x[m + nz];
+    params.leakage_current = stage1.x[m + nz + 1] - stage1.x[m + nz + 2];
+  }
+  ButterflyStrainCreep model(std::move(params));
+  const CreepRecord record{input, parts.fit_input, parts.fit_output, options.sample_time};
+  auto initial_state = start_of(model, record, periodic);
+
+  const auto parameter_count = static_cast<std::size_t>(m + nz) + 1 + (options.fit_leakage ? 2 : 0);
+  auto p_state = initial_state;
+  FitReport polarisation_report = detail::weight_fit_report(
+      "butterfly_strain_creep_polarisation", p_method, stage1, parameter_count, p_parts.fit_output,
+      measured_polarisation(model, p_state, parts.fit_input));
+  if (!p_parts.validation_input.empty()) {
+    polarisation_report.validation = error_metrics(
+        p_parts.validation_output, measured_polarisation(model, p_state, p_parts.validation_input));
+  }
+  FitReport report;
+  report.model = "butterfly_strain_creep";
+  report.method = "two stages: " + p_method +
+                  " on the measured polarisation, linear least squares on y(v, P) with the "
+                  "model's P (without the leakage charge)";
+  report.termination = stage1.nnls.termination;
+  report.message = stage1.nnls.message;
+  report.iterations = stage1.nnls.iterations;
+  report.parameters =
+      parameter_count + options.switching.degree + 1 + (options.switching.fit_field_term ? 1 : 0);
+  auto state = initial_state;
+  const auto predicted = simulate(model, state, parts.fit_input);
+  report.initial_cost = detail::best_constant_cost(parts.fit_output);
+  report.final_cost = detail::half_sum_of_squares(parts.fit_output, predicted);
+  report.fit = error_metrics(parts.fit_output, predicted);
+  if (!parts.validation_input.empty()) {
+    report.validation =
+        error_metrics(parts.validation_output, simulate(model, state, parts.validation_input));
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+  report.seconds = seconds;
+  polarisation_report.seconds = seconds;
+  return {{std::move(model), std::move(initial_state), std::move(report)},
+          std::move(polarisation_report)};
+}
+
 }  // namespace butterfly_creep_fit
 }  // namespace
 
@@ -363,6 +553,12 @@ ButterflyCreepFit fit_butterfly_strain_creep(std::span<const double> input,
 ButterflyCreepFit fit_butterfly_strain_creep(std::span<const FitRecord> records,
                                              const ButterflyCreepFitOptions& options) {
   return butterfly_creep_fit::fit_many(records, options);
+}
+
+ButterflyCreepTwoStageFit fit_butterfly_strain_creep_with_polarisation(
+    std::span<const double> input, std::span<const double> polarisation,
+    std::span<const double> output, const ButterflyCreepFitOptions& options) {
+  return butterfly_creep_fit::fit_with_polarisation(input, polarisation, output, options);
 }
 
 }  // namespace hyst

@@ -10,6 +10,7 @@
 #include "hyst/identify/fit_butterfly_strain_creep.hpp"
 #include "hyst/inverse/inverse_butterfly_strain_creep.hpp"
 #include "hyst/models/butterfly_strain_creep.hpp"
+#include "hyst/registry/butterfly_creep_fit.hpp"
 #include "model_adapter.hpp"
 #include "model_entries.hpp"
 
@@ -120,7 +121,14 @@ FieldTable<ButterflyCreepFitOptions> butterfly_creep_fit_option_table() {
       .add("longest_time_constant", &O::longest_time_constant, "s",
            "logarithmic: the slowest lag (without time_constants)")
       .add("sample_time", &O::sample_time, "s", "Ts of the record")
-      .add("rounds", &O::rounds, "", "Gauss-Newton rounds of the creep weights and the map");
+      .add("rounds", &O::rounds, "", "Gauss-Newton rounds of the creep weights and the map")
+      .add("fit_leakage", &O::fit_leakage, "",
+           "with measured polarisation only (Python): fit the leakage charge g sum Ts v + i0 t");
+}
+
+std::unique_ptr<DynamicModel> butterfly_creep_dynamic_model(ButterflyCreepFit fit) {
+  return std::make_unique<ModelAdapter<ButterflyCreepCodec>>(std::move(fit.model),
+                                                             std::move(fit.initial_state));
 }
 
 ButterflyCreepFit fit_butterfly_creep_record(std::span<const double> input,
@@ -163,3 +171,28 @@ ModelEntry butterfly_strain_creep_entry() {
 }
 
 }  // namespace hyst::detail
+
+namespace hyst {
+
+ButterflyCreepTwoStageModelFit fit_butterfly_strain_creep_model_with_polarisation(
+    std::span<const double> input, std::span<const double> polarisation,
+    std::span<const double> output, const nlohmann::json& options) {
+  static const auto table = detail::butterfly_creep_fit_option_table();
+  // The held-out fraction, which the registry's fits take beside their options.
+  auto rest = options;
+  double validate_fraction = 0.0;
+  if (rest.is_object() && rest.contains("validate_fraction")) {
+    const auto& value = rest["validate_fraction"];
+    if (!value.is_number()) throw Error("fit options.validate_fraction: expected a number");
+    validate_fraction = value.get<double>();
+    rest.erase("validate_fraction");
+  }
+  auto fit_options = table.read(rest, "fit options");
+  fit_options.validate_fraction = validate_fraction;
+  auto fit = fit_butterfly_strain_creep_with_polarisation(input, polarisation, output, fit_options);
+  auto report = std::move(fit.fit.report);
+  return {detail::butterfly_creep_dynamic_model(std::move(fit.fit)), std::move(report),
+          std::move(fit.polarisation_report)};
+}
+
+}  // namespace hyst

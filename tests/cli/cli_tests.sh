@@ -1326,7 +1326,7 @@ case_butterfly() {
 case_butterfly_creep() {
   # The measured 60 s hold: the butterfly with creep fits the displacement closer than the
   # butterfly without (the same switching fit plus the creep lags), runs at the record's own time
-  # axis, and the C export says it cannot export it; a leakage is no option of a strain fit.
+  # axis, and the C export says it cannot export it; a leakage cannot be fitted from the strain.
   local trap="$HYST_SHARED_DATA_DIR/piezo_pzt_trapezoid_creep_table1/RMN_TRAP_1400V_1000V_60S_TABLE1.dat"
   [ -f "$trap" ] || { echo "skipped: $trap not found"; return; }
   # Both warn that the held-out prediction of the hold's second half is nearly constant.
@@ -1346,7 +1346,7 @@ case_butterfly_creep() {
   expect_ok "$HYST" simulate --model bc.json --input drive.csv --column V+ --time Time --out s.csv
   expect_error 1 "'butterfly_strain_creep' is not supported" -- \
     "$HYST" export --lang c --model bc.json --out bc_c
-  expect_error 1 "fit_leakage: unknown field" -- "$HYST" fit butterfly_strain_creep --data "$trap" \
+  expect_error 1 "strains nothing" -- "$HYST" fit butterfly_strain_creep --data "$trap" \
     --input V+ --output D1 --time Time --option fit_leakage=true --out x.json
 }
 

@@ -59,6 +59,9 @@ struct ButterflyCreepFitOptions {
   //! Several records: Ts > 0 [s] of each (the lags are discretised exactly for each); empty:
   //! `sample_time` for all. The model is discretised at the first record's.
   std::vector<double> sample_times{};
+  //! With measured polarisation only: fit the leakage charge g sum Ts v + i0 t (g >= 0) of the
+  //! measured polarisation; the fits from the strain alone refuse it.
+  bool fit_leakage = false;
   std::size_t rounds = 10;         //!< Gauss-Newton rounds of step 2, 1 .. 50
   double validate_fraction = 0.0;  //!< held out at the record's end, [0, 1)
   ProgressCallback progress{};     //!< told by the switching part's fit; may be empty
@@ -81,5 +84,23 @@ ButterflyCreepFit fit_butterfly_strain_creep(std::span<const double> input,
 //! given, is chosen on the last record. Throws hyst::Error naming the record or the option.
 ButterflyCreepFit fit_butterfly_strain_creep(std::span<const FitRecord> records,
                                              const ButterflyCreepFitOptions& options = {});
+
+//! The fit with measured polarisation (records with v, P and y, e.g. an aixACCT export's V+, P1
+//! and D1), in two stages:
+//! 1. the measured polarisation P_m = P_off + sum_r mu_r s_r + sum_ij c_ij z_ij (+ g Q + i0 t
+//!    with fit_leakage) by one NNLS over the relay, creep and leakage weights (mu, c, g >= 0),
+//!    the law's penalty on c, its smoothing chosen on the last 30 % of the polarisation when not
+//!    given;
+//! 2. the map y = y_off + d v + sum q_n P^n by linear least squares on the model's P without the
+//!    leakage charge (a leakage strains nothing).
+struct ButterflyCreepTwoStageFit {
+  ButterflyCreepFit fit;          //!< the chain v -> P -> y; its report is the strain's
+  FitReport polarisation_report;  //!< stage 1: P_m(v) against the measured polarisation
+};
+
+//! Throws hyst::Error for invalid data or options (polarisation, input and output of one length).
+ButterflyCreepTwoStageFit fit_butterfly_strain_creep_with_polarisation(
+    std::span<const double> input, std::span<const double> polarisation,
+    std::span<const double> output, const ButterflyCreepFitOptions& options = {});
 
 }  // namespace hyst
