@@ -26,5 +26,8 @@ std::string creep_section(const std::filesystem::path& data_dir,
 
 // Every model with a fitter ranked on every measured record that has an input and an output
 // (model_comparison_section.cpp): tables, plots and an HTML report per record.
+std::string creep_hold_section(const std::filesystem::path& data_dir,
+                               const std::filesystem::path& folder);
+
 std::string model_comparison_section(const std::filesystem::path& data_dir,
                                      const std::filesystem::path& folder);

@@ -2,7 +2,7 @@
 // files and PNG plots, and collects their Markdown into results.md.
 //
 // Usage: hyst_demo [--data DIR] [--out DIR] [--only SECTION]
-//   (defaults ../shared/data and out/demo; SECTION: piezo, actuator, seed, creep or models)
+//   (defaults ../shared/data and out/demo; SECTION: piezo, actuator, seed, creep, hold or models)
 
 #include <algorithm>
 #include <exception>
@@ -32,11 +32,13 @@ int run(const fs::path& data_dir, const fs::path& folder, std::string_view only)
        [&] { return actuator_section(HYST_EXAMPLE_CONFIG_DIR "/msma_assumed.json", folder); }},
       {"seed", [&] { return seed_comparison_section(folder); }},
       {"creep", [&] { return creep_section(data_dir, folder); }},
+      {"hold", [&] { return creep_hold_section(data_dir, folder); }},
       {"models", [&] { return model_comparison_section(data_dir, folder); }},
   };
   if (!only.empty() && std::none_of(sections.begin(), sections.end(),
                                     [&](const auto& section) { return section.first == only; })) {
-    fmt::print(stderr, "hyst_demo: unknown section '{}' (piezo, actuator, seed, creep, models)\n",
+    fmt::print(stderr,
+               "hyst_demo: unknown section '{}' (piezo, actuator, seed, creep, hold, models)\n",
                only);
     return 2;
   }
