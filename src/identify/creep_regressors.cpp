@@ -146,4 +146,20 @@ Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Inde
   return penalty;
 }
 
+Eigen::MatrixXd leakage_columns(std::span<const FitRecord> records,
+                                std::span<const double> sample_times, Eigen::Index rows) {
+  Eigen::MatrixXd columns(rows, 3);
+  Eigen::Index row = 0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    double charge = 0.0;
+    double time = 0.0;
+    for (double v : records[r].input) {
+      charge += sample_times[r] * v;
+      time += sample_times[r];
+      columns.row(row++) << charge, time, -time;
+    }
+  }
+  return columns;
+}
+
 }  // namespace hyst::detail

@@ -74,6 +74,12 @@ CreepRegressors creep_regressors(std::span<const FitRecord> records,
 Eigen::MatrixXd creep_law_penalty(const CreepRegressors& regressors, Eigen::Index columns,
                                   double smoothing, Eigen::Index first_creep_column);
 
+// The leakage's columns: the charge sum Ts v (g >= 0: a conduction) and the time sum Ts twice
+// (+ and -: NNLS bounds every unknown below and the offset current i0 has either sign), each
+// record from its start, `rows` in all.
+Eigen::MatrixXd leakage_columns(std::span<const FitRecord> records,
+                                std::span<const double> sample_times, Eigen::Index rows);
+
 // The state a record starts from: virgin, or the periodic steady state of its input.
 template <class Model>
 typename Model::State creep_start_state(const Model& model, std::span<const double> input,

@@ -394,20 +394,6 @@ std::vector<double> measured_polarisation(const ButterflyStrainCreep& model,
   return P;
 }
 
-// The leakage's columns: the charge sum Ts v (g >= 0) and the time sum Ts twice (+ and -: i0 has
-// either sign), from the record's start, as the model integrates them.
-Eigen::MatrixXd leakage_columns(std::span<const double> input, double sample_time) {
-  Eigen::MatrixXd columns(static_cast<Eigen::Index>(input.size()), 3);
-  double charge = 0.0;
-  double time = 0.0;
-  for (std::size_t k = 0; k < input.size(); ++k) {
-    charge += sample_time * input[k];
-    time += sample_time;
-    columns.row(static_cast<Eigen::Index>(k)) << charge, time, -time;
-  }
-  return columns;
-}
-
 ButterflyCreepTwoStageFit fit_with_polarisation(std::span<const double> input,
                                                 std::span<const double> polarisation,
                                                 std::span<const double> output,
@@ -441,7 +427,9 @@ ButterflyCreepTwoStageFit fit_with_polarisation(std::span<const double> input,
   Eigen::MatrixXd columns(rows, m + nz + leak);
   columns << design.relays, Z;
   if (options.fit_leakage) {
-    columns.rightCols(3) = leakage_columns(parts.fit_input, options.sample_time);
+    const FitRecord fitted{parts.fit_input, p_parts.fit_output};
+    columns.rightCols(3) =
+        detail::leakage_columns(std::span(&fitted, 1), std::span(&options.sample_time, 1), rows);
   }
   const auto solve_stage1 = [&](Eigen::Index fitted_rows, double smoothing) {
     const double share = std::sqrt(static_cast<double>(fitted_rows) / static_cast<double>(rows));

@@ -44,25 +44,6 @@ struct Solved {
   std::vector<double> outputs;       // every record's output, joined
 };
 
-// The leakage's columns: the charge sum Ts v (g >= 0: a conduction) and the time sum Ts twice
-// (+ and -: NNLS bounds every unknown below and the offset current i0 has either sign), each
-// record from its start.
-Eigen::MatrixXd leakage_columns(std::span<const FitRecord> records,
-                                std::span<const double> sample_times, Eigen::Index rows) {
-  Eigen::MatrixXd columns(rows, 3);
-  Eigen::Index row = 0;
-  for (std::size_t r = 0; r < records.size(); ++r) {
-    double charge = 0.0;
-    double time = 0.0;
-    for (double v : records[r].input) {
-      charge += sample_times[r] * v;
-      time += sample_times[r];
-      columns.row(row++) << charge, time, -time;
-    }
-  }
-  return columns;
-}
-
 // One NNLS on the columns [w_j, z_ij] of every record (and the leakage's); p_0 = eps + q.
 Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& options) {
   auto regressors =
@@ -75,7 +56,7 @@ Solved solve(std::span<const FitRecord> records, const PiCreepFitOptions& option
       throw Error(fmt::format("{}: {} samples, fewer than unknowns + 2 = {}", kFit, rows,
                               creep_columns + 3 + 2));
     }
-    const Eigen::MatrixXd leakage = leakage_columns(records, regressors.sample_times, rows);
+    const Eigen::MatrixXd leakage = detail::leakage_columns(records, regressors.sample_times, rows);
     regressors.columns.conservativeResize(Eigen::NoChange, creep_columns + 3);
     regressors.columns.rightCols(3) = leakage;
   }
