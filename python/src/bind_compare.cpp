@@ -50,7 +50,14 @@ void bind_cross_record(py::module_& module) {
                            "A model's error on one held-out record (see hyst.compare).")
       .def_readonly("record", &HeldOutScore::record)
       .def_readonly("fitted_on", &HeldOutScore::fitted_on, "The records the model was fitted on.")
-      .def_readonly("metrics", &HeldOutScore::metrics, "ErrorMetrics on the held-out record.");
+      .def_readonly("metrics", &HeldOutScore::metrics, "ErrorMetrics on the held-out record.")
+      .def_property_readonly(
+          "domain",
+          [](const HeldOutScore& score) {
+            return domain_check_dict(score.domain, score.metrics.samples);
+          },
+          "{'inside': bool, 'message': str}: the held-out record's inputs against the domain of "
+          "the records the model was fitted on.");
   py::class_<CrossRecordRow>(module, "CrossRecordRow",
                              "One row of a comparison on separate records.")
       .def_readonly("model", &CrossRecordRow::model)
@@ -117,6 +124,13 @@ void bind_compare(py::module_& module) {
       .def_readonly("fit_seconds", &ComparedModel::fit_seconds)
       .def_readonly("ns_per_sample", &ComparedModel::ns_per_sample)
       .def_property_readonly(
+          "held_out_domain",
+          [](const ComparedModel& row) {
+            return domain_check_dict(row.held_out_domain, row.validation.samples);
+          },
+          "{'inside': bool, 'message': str}: the held-out inputs against the domain of the fit "
+          "part.")
+      .def_property_readonly(
           "simulated", [](const ComparedModel& row) { return readonly_copy(row.simulated); },
           "Free run over the whole record (empty when the model failed).")
       .def("__repr__", [](const ComparedModel& row) {
@@ -154,17 +168,21 @@ void bind_compare(py::module_& module) {
           "html",
           [](const ModelComparison& comparison, const InputArray& input, const InputArray& output,
              const std::string& title, const std::string& input_label,
-             const std::string& output_label) {
+             const std::string& output_label, const std::string& output_unit,
+             const std::optional<InputArray>& time) {
+            plot::ComparisonPageLabels labels{input_label, output_label, output_unit, {}};
+            if (time) labels.time = as_vector(*time, "time");
             return plot::model_comparison_html(comparison, as_span(input, "input"),
-                                               as_span(output, "output"), title,
-                                               {input_label, output_label});
+                                               as_span(output, "output"), title, labels);
           },
           "input"_a, "output"_a, "title"_a = "Model comparison", "input_label"_a = "input",
-          "output_label"_a = "output",
+          "output_label"_a = "output", "output_unit"_a = "", "time"_a = py::none(),
           "One self-contained interactive HTML page (Chart.js inline): the ranking table, sortable "
           "by column, and the loops, outputs and errors over the whole record with the held-out "
           "part shaded; zoom, pan, curves toggled from the legend, values on hover. The labels "
-          "name the axes, with units, e.g. 'V+ [V]'.");
+          "name the axes, with units, e.g. 'V+ [V]'; output_unit ('nm') labels the error axis "
+          "and the RMSE and max-error columns; time (seconds, one per sample) draws the outputs "
+          "and errors over time instead of the sample number.");
 
   bind_cross_record(module);
   module.def(

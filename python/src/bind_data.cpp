@@ -268,20 +268,26 @@ void bind_files(py::module_& d) {
   d.def(
       "info",
       [](const std::filesystem::path& path, std::optional<std::size_t> table, double band_fraction,
-         std::optional<std::pair<std::string, std::string>> loop) -> StrDict {
+         std::optional<std::pair<std::string, std::string>> loop,
+         const std::string& time) -> StrDict {
         data::RecordInfoOptions options;
         options.table = table;
         options.band_fraction = band_fraction;
         options.loop = std::move(loop);
+        options.time = time;
         return py::dict(json_to_python(data::record_info_json(data::record_info(path, options))));
       },
       "path"_a, "table"_a = py::none(), "band_fraction"_a = 0.02, "loop"_a = py::none(),
+      "time"_a = "",
       "What a data file (CSV, .mat, aixACCT export, MicroMag loop file) holds, as a dict with the "
       "content of 'hyst "
       "data info --json': its tables, each column's unit, samples, min, max and the counts of "
       "reversals and cycles with a band of band_fraction x its range; loop=(input, output) adds "
       "the figures of every cycle of that loop. table chooses one measurement table of an "
-      "aixACCT export.");
+      "aixACCT export. time names the time column [s] (default: an aixACCT table's 'Time'): "
+      "each table that has it gets 'time' (column, uniform, sample_time, min_step, max_step, "
+      "duration) and its other columns 'largest_rate' [/s] and 'longest_run' [s], the longest "
+      "time between reversal points.");
   d.def(
       "extract",
       [](const std::filesystem::path& path, const std::vector<std::string>& columns,

@@ -30,6 +30,10 @@ std::string report_repr(const FitReport& r) {
 
 }  // namespace
 
+py::dict domain_check_dict(const DomainCheck& check, std::size_t samples) {
+  return py::dict(py::arg("inside") = check.inside(), py::arg("message") = check.message(samples));
+}
+
 void bind_identify(py::module_& module) {
   py::enum_<Termination>(module, "Termination", "Why an iterative fit stopped.")
       .value("converged", Termination::converged)

@@ -410,8 +410,7 @@ void bind_registry(py::module_& module) {
         if (domain) {
           const auto check = axis ? check_record_inputs(*domain, u, axis->sample_time, axis->steps)
                                   : check_record_inputs(*domain, u, std::nullopt);
-          out["domain"] =
-              py::dict("inside"_a = check.inside(), "message"_a = check.message(u.size()));
+          out["domain"] = domain_check_dict(check, u.size());
         } else {
           out["domain"] = py::none();
         }

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hyst/core/progress.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 
 namespace hyst::python {
 
@@ -92,6 +93,9 @@ py::array_t<double> to_array(std::vector<double>&& values);
 py::array_t<double> readonly_view(std::span<const double> values, py::handle owner);
 //! A read-only float64 copy: a snapshot that cannot be mistaken for a handle to live state.
 py::array_t<double> readonly_copy(std::span<const double> values);
+
+//! {'inside': bool, 'message': str} of a check on a record of `samples` samples (DomainCheck).
+py::dict domain_check_dict(const DomainCheck& check, std::size_t samples);
 
 //! "[0, 0.3, 0.7]", shortened to the first and last values for long sequences.
 std::string format_list(std::span<const double> values);

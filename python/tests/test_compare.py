@@ -41,6 +41,12 @@ def test_compare_ranks_the_generating_model_first(tmp_path):
     assert best.report.model == "pi"
     assert len(best.simulated) == len(v)
     assert repr(best).startswith("ComparedModel(model='pi'")
+    # The held-out inputs against the fit part's range, widened by 5 % of its width.
+    low, high = min(v[:700]), max(v[:700])
+    margin = 0.05 * (high - low)
+    outside = sum(1 for x in v[700:] if x < low - margin or x > high + margin)
+    assert best.held_out_domain["inside"] == (outside == 0)
+    assert (f"{outside} of 300 samples" in best.held_out_domain["message"]) == (outside > 0)
     assert "| 1 | pi |" in comparison.markdown()
     assert comparison.csv().startswith("rank,model,status,validation_nrmse_percent")
     # The yardstick: the exact PI beats every reference predictor; no no-fit verdict.
@@ -116,6 +122,8 @@ def test_compare_on_separate_records():
     assert isinstance(score, hyst.HeldOutScore)
     assert score.record == "small" and score.fitted_on == ["large"]
     assert score.metrics.nrmse_percent == best.mean_nrmse_percent
+    # The small record stays inside the large one's domain.
+    assert score.domain == {"inside": True, "message": ""}
     assert comparison.ranking[1].mean_nrmse_percent > 0.1
     assert "| 1 | pi |" in comparison.markdown()
     assert comparison.csv().startswith("rank,model,status,mean_nrmse_percent")
@@ -158,6 +166,11 @@ def test_compare_leave_one_out():
     assert comparison.validate_records == ["record 1", "record 2"]
     row = comparison.ranking[0]
     assert [score.record for score in row.scores] == ["record 1", "record 2"]
+    # Held out, the large record leaves the domain of the small one (amplitude 2 against 0.8).
+    assert not row.scores[0].domain["inside"]
+    assert "inputs above the fitted range" in row.scores[0].domain["message"]
+    assert row.scores[1].domain["inside"]
+    assert "Held-out record 'record 1' leaves the domain" in comparison.markdown()
     assert row.scores[1].metrics.nrmse_percent < 1e-6
     assert row.worst_record == "record 1" and row.worst_nrmse_percent > 1e-3
     assert row.mean_nrmse_percent == pytest.approx(

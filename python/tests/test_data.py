@@ -252,6 +252,25 @@ def test_info_of_csv_and_errors(tmp_path):
         data.info(tmp_path / "t.csv", table=2)
 
 
+def test_info_with_a_time_column(tmp_path):
+    # The triangle at 0.25 s per sample (steps of 1): rate 4 per s, the longest run between
+    # reversals 20 samples = 5 s; the same as the command line's.
+    v = triangle(10, 2)
+    io.write_csv(tmp_path / "t.csv", {"t": 0.25 * np.arange(len(v)), "v": v})
+    info = data.info(tmp_path / "t.csv", time="t")
+    assert info == json.loads(cli_output("data", "info", tmp_path / "t.csv", "--time", "t",
+                                         "--json"))
+    (table,) = info["tables"]
+    assert table["time"] == {"column": "t", "uniform": True, "sample_time": 0.25,
+                             "min_step": 0.25, "max_step": 0.25, "duration": 20.0}
+    v_info = table["columns"][1]
+    assert v_info["largest_rate"] == pytest.approx(4.0)
+    assert v_info["longest_run"] == pytest.approx(5.0)
+    assert "time" not in data.info(tmp_path / "t.csv")["tables"][0]
+    with pytest.raises(hyst.Error, match="no table has the time column 'x'"):
+        data.info(tmp_path / "t.csv", time="x")
+
+
 def test_extract_like_the_cli(data_dir, tmp_path):
     path = data_dir / "piezo_pzt_aixacct_butterfly" / "RMN_TRAP_SLOW.dat"
     columns = data.extract(path, ["V+", "P1 [uC/cm2]"], table=6, out=tmp_path / "py.csv")

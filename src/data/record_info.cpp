@@ -1,6 +1,8 @@
 #include "hyst/data/record_info.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -9,6 +11,7 @@
 #include "hyst/core/error.hpp"
 #include "hyst/data/cycles.hpp"
 #include "hyst/data/reversal_points.hpp"
+#include "hyst/data/sample_time.hpp"
 #include "hyst/io/atomic_file.hpp"
 #include "hyst/io/data_file.hpp"
 #include "hyst/io/micromag_forc.hpp"
@@ -26,16 +29,17 @@ struct ReadTable {
   TableInfo info;
   std::vector<std::vector<double>> values;  //!< values[j] belongs to info.columns[j]
   std::size_t loop_start = 0;  //!< first row of the loop cycles (after an initial curve)
+  bool aixacct = false;        //!< an aixACCT table: its 'Time' column is the default time axis
 };
 
 ReadTable read_table(const io::AixacctTable& table, std::string title) {
-  ReadTable read{{std::move(title), {}, {}, table.rows(), {}}, {}, 0};
+  ReadTable read{{std::move(title), {}, {}, table.rows(), {}, {}}, {}, 0, true};
   for (const auto key : kHighlights) {
     if (const auto value = table.metadata_text(key)) read.info.metadata.emplace_back(key, *value);
   }
   for (const auto& column : table.columns) {
     read.info.columns.push_back(
-        {column.name, column.unit, column.values.size(), {}, 0.0, 0.0, {}, {}});
+        {column.name, column.unit, column.values.size(), {}, 0.0, 0.0, {}, {}, {}, {}});
     read.values.push_back(column.values);
   }
   return read;
@@ -53,7 +57,8 @@ std::string series_of(std::string_view format) {
 
 //! A MicroMag loop file's table: units per column, the segments and the initial curve.
 ReadTable read_loop_table(const io::MicromagLoopFile& file) {
-  ReadTable read{{"table", {}, {}, file.points(), {}}, file.values, file.initial_curve_points};
+  ReadTable read{
+      {"table", {}, {}, file.points(), {}, {}}, file.values, file.initial_curve_points, false};
   if (const auto system = file.header_text("Units of measure")) {
     read.info.metadata.emplace_back("units of measure", *system);
   }
@@ -65,7 +70,7 @@ ReadTable read_loop_table(const io::MicromagLoopFile& file) {
   }
   for (std::size_t j = 0; j < file.columns.size(); ++j) {
     read.info.columns.push_back(
-        {file.columns[j], file.units[j], file.values[j].size(), {}, 0.0, 0.0, {}, {}});
+        {file.columns[j], file.units[j], file.values[j].size(), {}, 0.0, 0.0, {}, {}, {}, {}});
   }
   return read;
 }
@@ -122,9 +127,9 @@ std::vector<ReadTable> read_tables(const std::filesystem::path& path,
     return tables;
   }
   const io::DataFile source(path, options.table);
-  ReadTable table{{source.is_mat() ? "variables" : "table", {}, {}, 0, {}}, {}, 0};
+  ReadTable table{{source.is_mat() ? "variables" : "table", {}, {}, 0, {}, {}}, {}, 0, false};
   for (const auto& name : source.columns()) {
-    ColumnInfo column{name, {}, 0, {}, 0.0, 0.0, {}, {}};
+    ColumnInfo column{name, {}, 0, {}, 0.0, 0.0, {}, {}, {}, {}};
     std::vector<double> values;
     try {
       values = source.column(name);
@@ -161,14 +166,63 @@ void summarise(ColumnInfo& column, std::span<const double> values, double band_f
   }
 }
 
-//! The column named `name` or headed "name [unit]", or nullptr.
-const std::vector<double>* find_values(const ReadTable& table, std::string_view name) {
+//! The index of the column named `name` or headed "name [unit]", or none.
+std::optional<std::size_t> column_index(const ReadTable& table, std::string_view name) {
   for (std::size_t j = 0; j < table.info.columns.size(); ++j) {
     const auto& column = table.info.columns[j];
     const auto header = column.unit.empty() ? column.name : column.name + " [" + column.unit + "]";
-    if (column.name == name || header == name) return &table.values[j];
+    if (column.name == name || header == name) return j;
   }
-  return nullptr;
+  return std::nullopt;
+}
+
+//! The column named `name` or headed "name [unit]", or nullptr.
+const std::vector<double>* find_values(const ReadTable& table, std::string_view name) {
+  const auto j = column_index(table, name);
+  return j ? &table.values[*j] : nullptr;
+}
+
+//! The table's time axis (options.time, else an aixACCT table's 'Time'), and every other column's
+//! largest rate and longest run between reversals on it; false when the table has no such column.
+bool add_time_axis(ReadTable& table, const RecordInfoOptions& options, const std::string& file) {
+  if (options.time.empty() && !table.aixacct) return false;
+  const std::string name = options.time.empty() ? "Time" : options.time;
+  const auto t = column_index(table, name);
+  if (!t || !table.info.columns[*t].problem.empty()) return false;
+  const auto& times = table.values[*t];
+  const auto axis =
+      time_axis(times, fmt::format("{}: {} time column '{}'", file, table.info.title, name));
+  TimeAxisInfo info{name,
+                    axis.uniform(),
+                    axis.sample_time,
+                    axis.sample_time,
+                    axis.sample_time,
+                    times.back() - times.front()};
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    info.min_step = std::min(info.min_step, times[k] - times[k - 1]);
+    info.max_step = std::max(info.max_step, times[k] - times[k - 1]);
+  }
+  table.info.time = info;
+  for (std::size_t j = 0; j < table.info.columns.size(); ++j) {
+    auto& column = table.info.columns[j];
+    const auto& values = table.values[j];
+    if (j == *t || values.size() != times.size() || column.max <= column.min) continue;
+    double rate = 0.0;
+    for (std::size_t k = 1; k < values.size(); ++k)
+      rate = std::max(rate, std::abs(values[k] - values[k - 1]) / (times[k] - times[k - 1]));
+    column.largest_rate = rate;
+    // Runs between the reversal points, and from the start and to the end of the record.
+    std::vector<std::size_t> ends{0};
+    for (const auto& point :
+         reversal_points(values, options.band_fraction * (column.max - column.min)))
+      ends.push_back(point.index);
+    ends.push_back(values.size() - 1);
+    double run = 0.0;
+    for (std::size_t i = 1; i < ends.size(); ++i)
+      run = std::max(run, times[ends[i]] - times[ends[i - 1]]);
+    column.longest_run = run;
+  }
+  return true;
 }
 
 //! The figures of every cycle of the (input, output) loop, or none when the table lacks one of
@@ -252,11 +306,17 @@ RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOption
     }
   }
   if (tables.empty()) tables = read_tables(path, options, info.format);
+  bool timed = false;
   for (auto& table : tables) {
     for (std::size_t j = 0; j < table.info.columns.size(); ++j)
       summarise(table.info.columns[j], table.values[j], options.band_fraction);
     table.info.loops = loop_figures(table, options);
+    timed = add_time_axis(table, options, path.string()) || timed;
     info.tables.push_back(std::move(table.info));
+  }
+  if (!options.time.empty() && !timed) {
+    throw Error(fmt::format("{}: no table has the time column '{}'", path.string(), options.time),
+                "time");
   }
   return info;
 }
@@ -280,8 +340,15 @@ nlohmann::json record_info_json(const RecordInfo& info) {
         c["max"] = column.max;
         c["reversals"] = count_json(column.reversals);
         c["cycles"] = count_json(column.cycles);
+        if (column.largest_rate) c["largest_rate"] = *column.largest_rate;
+        if (column.longest_run) c["longest_run"] = *column.longest_run;
       }
       entry["columns"].push_back(std::move(c));
+    }
+    if (const auto& t = table.time) {
+      entry["time"] = {{"column", t->column},           {"uniform", t->uniform},
+                       {"sample_time", t->sample_time}, {"min_step", t->min_step},
+                       {"max_step", t->max_step},       {"duration", t->duration}};
     }
     for (const auto& m : table.loops) {
       entry["loops"].push_back({{"first", m.first},

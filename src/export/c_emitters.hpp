@@ -5,6 +5,7 @@
 // overload per model type.
 
 #include "c_writer.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/models/bouc_wen.hpp"
 #include "hyst/models/generalized_prandtl_ishlinskii.hpp"
 #include "hyst/models/modified_prandtl_ishlinskii.hpp"
@@ -33,5 +34,9 @@ CModelCode emit_c(const Preisach& model, const PreisachState& state, const CWrit
                   const CExportOptions& options);
 CModelCode emit_c(const BoucWen& model, const BoucWen::State& state, const CWriter& writer,
                   const CExportOptions& options);
+
+//! Adds the fitted domain to `code` (CExportOptions::domain): <prefix>_DOMAIN, the status type
+//! and <prefix>_check_input, and <prefix>_check_target when the code has an inverse.
+void add_c_domain(const CWriter& writer, const FittedDomain& domain, CModelCode& code);
 
 }  // namespace hyst::detail

@@ -72,6 +72,11 @@ ComparedModel compare_one(const ModelEntry& entry, std::span<const double> input
     row.validation =
         error_metrics(output.subspan(split.validation_begin, split.validation_size()), held_out);
     row.ns_per_sample = simulation_ns_per_sample(*outcome.model, input, options.timing_seconds);
+    if (row.report->domain) {
+      row.held_out_domain = check_record_inputs(
+          *row.report->domain, input.subspan(split.validation_begin, split.validation_size()),
+          options.sample_time);
+    }
     row.ok = true;
   } catch (const std::exception& error) {
     row.ok = false;
@@ -228,6 +233,18 @@ std::string no_fit_line(const ModelComparison& comparison) {
                    : fmt::format("Seen: {}.", seen));
 }
 
+std::string held_out_domain_line(const ModelComparison& comparison) {
+  std::vector<std::pair<std::string, DomainCheck>> checks;
+  for (const auto& row : comparison.ranking)
+    if (row.ok) checks.emplace_back(row.model, row.held_out_domain);
+  const auto message = models_domain_message(checks, comparison.split.validation_size());
+  if (message.empty()) return {};
+  return fmt::format(
+      "The held-out part leaves the domain the models were fitted on (their scores there "
+      "measure extrapolation): {}.",
+      message);
+}
+
 std::string model_comparison_markdown(const ModelComparison& comparison) {
   std::string text = fmt::format(
       "Fit on samples {}..{}, ranked by free-run error on the held-out samples {}..{}.\n\n",
@@ -240,6 +257,8 @@ std::string model_comparison_markdown(const ModelComparison& comparison) {
       "or --leave-one-out).\n\n";
   if (const auto verdict = no_fit_line(comparison); !verdict.empty()) text += verdict + "\n\n";
   text += yardstick_line(comparison) + "\n\n";
+  if (const auto domain = held_out_domain_line(comparison); !domain.empty())
+    text += domain + "\n\n";
   text +=
       "| rank | model | validation NRMSE [%] | validation RMSE | max error | beats yardstick | "
       "parameters | fit time [s] | simulation [ns/sample] | status |\n"

@@ -92,7 +92,12 @@ void run_round(const ModelEntry& entry, const FitRound& round, const CrossRecord
     if (!std::isfinite(metrics.nrmse_percent)) {
       throw Error(fmt::format("unstable: the prediction of '{}' is not finite", record->name));
     }
-    row.scores.push_back({record->name, names_of(round.fit), metrics});
+    HeldOutScore score{record->name, names_of(round.fit), metrics, {}};
+    if (outcome.report.domain) {
+      score.domain =
+          check_record_inputs(*outcome.report.domain, record->input, options.sample_time);
+    }
+    row.scores.push_back(std::move(score));
   }
 }
 
@@ -140,7 +145,7 @@ std::vector<CrossRecordReference> yardstick(const std::vector<FitRound>& rounds,
           row.scores.clear();
           continue;
         }
-        row.scores.push_back({record->name, names_of(round.fit), *scores[i].validation});
+        row.scores.push_back({record->name, names_of(round.fit), *scores[i].validation, {}});
       }
     }
   }
@@ -329,6 +334,29 @@ std::string yardstick_line(const CrossRecordComparison& comparison) {
 
 }  // namespace
 
+std::string held_out_domain_lines(const CrossRecordComparison& comparison) {
+  std::string text;
+  for (const auto& record : comparison.validate_records) {
+    std::vector<std::pair<std::string, DomainCheck>> checks;
+    std::size_t samples = 0;
+    for (const auto& row : comparison.ranking) {
+      if (!row.ok) continue;
+      for (const auto& score : row.scores) {
+        if (score.record != record) continue;
+        checks.emplace_back(row.model, score.domain);
+        samples = score.metrics.samples;
+      }
+    }
+    if (const auto message = models_domain_message(checks, samples); !message.empty()) {
+      text += fmt::format(
+          "Held-out record '{}' leaves the domain the models were fitted on (their scores there "
+          "measure extrapolation): {}.\n\n",
+          record, message);
+    }
+  }
+  return text;
+}
+
 std::string cross_record_markdown(const CrossRecordComparison& comparison) {
   std::string text =
       comparison.leave_one_out
@@ -345,6 +373,7 @@ std::string cross_record_markdown(const CrossRecordComparison& comparison) {
   text += fmt::format("Held-out records: {}.\n\n", comparison.rule);
   text += no_fit_lines(comparison);
   text += yardstick_line(comparison) + "\n\n";
+  text += held_out_domain_lines(comparison);
   text +=
       "| rank | model | mean held-out NRMSE [%] | worst held-out NRMSE [%] | worst record | beats "
       "yardstick |";

@@ -150,4 +150,67 @@ DomainCheck check_targets(const FittedDomain& domain, std::span<const double> ta
   return beyond(targets, domain.output_min, domain.output_max, "targets");
 }
 
+std::string models_domain_message(
+    std::span<const std::pair<std::string, DomainCheck>> checks_by_model,
+    std::size_t record_samples) {
+  // (message, models) in the order the messages first appear.
+  std::vector<std::pair<std::string, std::string>> groups;
+  for (const auto& [model, check] : checks_by_model) {
+    if (check.inside()) continue;
+    const auto message = check.message(record_samples);
+    const auto group = std::find_if(groups.begin(), groups.end(),
+                                    [&](const auto& g) { return g.first == message; });
+    if (group == groups.end()) {
+      groups.emplace_back(message, model);
+    } else {
+      group->second += ", " + model;
+    }
+  }
+  std::string text;
+  for (const auto& [message, models] : groups)
+    text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", models, message);
+  return text;
+}
+
+FittedDomain merged_domain(std::span<const FittedDomain> parts) {
+  if (parts.empty()) throw Error("merged_domain: no fit record");
+  FittedDomain merged = parts.front();
+  merged.samples = 0;
+  for (const auto& part : parts) {
+    merged.input_min = std::min(merged.input_min, part.input_min);
+    merged.input_max = std::max(merged.input_max, part.input_max);
+    merged.output_min = std::min(merged.output_min, part.output_min);
+    merged.output_max = std::max(merged.output_max, part.output_max);
+    merged.samples += part.samples;
+    merged.largest_input_step = std::max(merged.largest_input_step, part.largest_input_step);
+    merged.longest_hold_samples = std::max(merged.longest_hold_samples, part.longest_hold_samples);
+    if (part.largest_time_constant) {
+      merged.largest_time_constant =
+          std::max(merged.largest_time_constant.value_or(0.0), *part.largest_time_constant);
+    }
+  }
+  const bool timed = std::all_of(parts.begin(), parts.end(), [](const FittedDomain& part) {
+    return part.sample_time.has_value();
+  });
+  if (!timed) {
+    merged.sample_time.reset();
+    return merged;
+  }
+  // In steps of the smallest sample time: the rate, hold and duration in seconds carry over.
+  double step = *parts.front().sample_time;
+  for (const auto& part : parts)
+    step = std::min(step, *part.sample_time);
+  double rate = 0.0, hold = 0.0, duration = 0.0;
+  for (const auto& part : parts) {
+    rate = std::max(rate, *part.largest_input_rate());
+    hold = std::max(hold, *part.longest_hold());
+    duration += *part.duration();
+  }
+  merged.sample_time = step;
+  merged.largest_input_step = rate * step;
+  merged.longest_hold_samples = static_cast<std::size_t>(std::llround(hold / step));
+  merged.samples = static_cast<std::size_t>(std::llround(duration / step));
+  return merged;
+}
+
 }  // namespace hyst

@@ -45,13 +45,23 @@ std::vector<double> at(std::span<const double> values, const std::vector<std::si
 std::string page_data(const ModelComparison& comparison, std::span<const double> input,
                       std::span<const double> output, const ComparisonPageLabels& labels) {
   const auto samples = page_samples(input.size());
+  if (!labels.time.empty() && labels.time.size() != input.size()) {
+    throw Error(
+        fmt::format("comparison page: {} times for {} samples", labels.time.size(), input.size()));
+  }
   nlohmann::json data = {{"input_label", labels.input},
                          {"output_label", labels.output},
+                         {"output_unit", labels.output_unit},
                          {"validation_begin", comparison.split.validation_begin},
+                         {"shown", kComparisonPageShownModels},
                          {"sample", samples},
                          {"input", at(input, samples)},
                          {"measured", at(output, samples)},
                          {"models", nlohmann::json::array()}};
+  if (!labels.time.empty()) {
+    data["time"] = at(labels.time, samples);
+    data["validation_begin_time"] = labels.time[comparison.split.validation_begin];
+  }
   for (const auto& row : comparison.ranking) {
     if (!row.ok || row.simulated.size() != input.size()) continue;
     data["models"].push_back({{"name", row.model}, {"simulated", at(row.simulated, samples)}});
@@ -75,12 +85,15 @@ std::string plotting_library() {
   return io::read_file(HYST_CHARTJS_FILE);
 }
 
-std::string table(const ModelComparison& comparison) {
-  std::string html =
+std::string table(const ModelComparison& comparison, const std::string& output_unit) {
+  const std::string unit =
+      output_unit.empty() ? std::string() : " [" + io::xml_escaped(output_unit) + "]";
+  std::string html = fmt::format(
       "<table id=\"ranking\">\n<thead><tr><th>rank</th><th>model</th><th>validation NRMSE "
-      "[%]</th><th>validation RMSE</th><th>max error</th><th>beats yardstick</th>"
+      "[%]</th><th>validation RMSE{0}</th><th>max error{0}</th><th>beats yardstick</th>"
       "<th>parameters</th><th>fit time [s]</th><th>simulation [ns/sample]</th><th>status</th>"
-      "</tr></thead>\n<tbody>\n";
+      "</tr></thead>\n<tbody>\n",
+      unit);
   std::size_t rank = 0;
   for (const auto& row : comparison.ranking) {
     if (row.ok) {
@@ -112,7 +125,7 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
       "th{{cursor:pointer;user-select:none}}th[data-order=ascending]::after{{content:' \\25B2'}}"
       "th[data-order=descending]::after{{content:' \\25BC'}}"
       "td:nth-child(2),td:last-child{{text-align:left}}tr.failed{{color:#a00}}"
-      "figure{{margin:1.5em 0}}.chart{{position:relative;height:420px;max-width:1000px}}"
+      "figure{{margin:1.5em 0}}.chart{{position:relative;height:420px;width:100%}}"
       ".zoom-box{{position:absolute;display:none;border:1px dashed #333;"
       "background:rgba(80,120,200,0.12);pointer-events:none}}"
       "#page-errors{{color:#a00}}h1{{overflow-wrap:anywhere}}</style>\n</head>\n<body>\n"
@@ -121,14 +134,16 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
       "the ranking is by the NRMSE on the held-out samples {3}..{4} (shaded in the figures). "
       "Click a column header to sort the table. In the figures: drag a box to zoom, shift-drag "
       "to pan, the mouse wheel zooms, a double click resets; a legend entry shows or hides "
-      "that curve in every figure.</p>\n",
+      "that curve in every figure. The measurement is black; the best {5} models are shown "
+      "when the page opens, the others' legend entries are struck through until clicked.</p>\n",
       io::xml_escaped(title), comparison.split.fit_begin, comparison.split.fit_end - 1,
-      comparison.split.validation_begin, comparison.split.validation_end - 1);
+      comparison.split.validation_begin, comparison.split.validation_end - 1,
+      kComparisonPageShownModels);
   if (const auto verdict = no_fit_line(comparison); !verdict.empty()) {
     html += fmt::format("<p id=\"no-fit\"><strong>{}</strong></p>\n", io::xml_escaped(verdict));
   }
   html += fmt::format("<p id=\"yardstick\">{}</p>\n", io::xml_escaped(yardstick_line(comparison)));
-  html += table(comparison);
+  html += table(comparison, labels.output_unit);
   html += "<pre id=\"page-errors\" hidden></pre>\n<pre id=\"selftest\" hidden></pre>\n";
   const bool any_fitted = std::any_of(comparison.ranking.begin(), comparison.ranking.end(),
                                       [](const ComparedModel& row) { return row.ok; });
@@ -136,7 +151,7 @@ std::string model_comparison_html(const ModelComparison& comparison, std::span<c
   const std::pair<const char*, const char*> figures[] = {
       {"loops", "The loops over the whole record: the fit part faded, the held-out part in full."},
       {"outputs", "Measured and simulated output over the whole record."},
-      {"errors", "Error measured - simulated over the whole record."}};
+      {"errors", "Error, measured minus simulated output, over the whole record."}};
   for (const auto& [id, caption] : figures) {
     html += fmt::format(
         "<figure id=\"{}\">\n<div class=\"chart\"><canvas></canvas></div>\n"

@@ -18,14 +18,25 @@
   }
 
   const data = JSON.parse(document.getElementById("comparison-data").textContent);
+  // Twenty colours (none black or grey: the measurement is black) and four dashes: model k gets
+  // colour k and dash k mod 4, so no two of the first twenty look alike and neighbours in the
+  // ranking differ in both.
   const palette = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2",
-    "#17becf", "#bcbd22", "#7f7f7f"];
-  const measuredColor = "#333333";
-  const heldOut = data.validation_begin;
+    "#17becf", "#bcbd22", "#393b79", "#aec7e8", "#ff9896", "#98df8a", "#c5b0d5", "#ffbb78",
+    "#c49c94", "#f7b6d2", "#9edae5", "#dbdb8d", "#637939"];
+  const dashes = [[], [6, 3], [2, 2], [8, 3, 2, 3]];
+  const measuredColor = "#000000";
+  // The figures over time use the record's time [s] where it has one, else the sample number.
+  const timed = Array.isArray(data.time);
+  const along = timed ? data.time : data.sample;
+  const alongLabel = timed ? "time [s]" : "sample";
+  const heldOut = timed ? data.validation_begin_time : data.validation_begin;
+  const errorLabel = data.output_unit ? `error [${data.output_unit}]` : "error";
   const format = (value) => Number(value).toPrecision(5);
   const charts = [];
 
-  // The held-out samples (x >= validation_begin on a sample axis), shaded behind the curves.
+  // The held-out samples (x >= the first held-out sample's time or number), shaded behind the
+  // curves.
   const shading = {
     id: "heldOutShading",
     beforeDatasetsDraw(chart) {
@@ -49,12 +60,16 @@
 
   // A loop: the fit part faded, the held-out part in full colour (its points come in order, so
   // the line goes back and forth with the input as measured).
-  function curve(label, xs, ys, color, fadeFitPart) {
+  // The first dataset is drawn last (Chart.js draws in reverse order): the measurement, first in
+  // every figure, lies on top.
+  function curve(label, xs, ys, style, fadeFitPart) {
+    const color = style.color;
     const set = { label, data: points(xs, ys), borderColor: color, backgroundColor: color,
-      showLine: true, pointRadius: 0, pointHitRadius: 4, borderWidth: 1.4 };
+      borderDash: style.dash, hidden: style.hidden, showLine: true, pointRadius: 0,
+      pointHitRadius: 4, borderWidth: style.width };
     if (fadeFitPart) {
       set.segment = { borderColor: (context) =>
-        data.sample[context.p1DataIndex] <= heldOut ? color + "40" : color };
+        data.sample[context.p1DataIndex] <= data.validation_begin ? color + "40" : color };
     }
     return set;
   }
@@ -165,16 +180,20 @@
     charts.push(chart);
   }
 
-  const models = data.models.map((model, k) => ({ ...model, color: palette[k % palette.length] }));
+  const measured = { color: measuredColor, dash: [], hidden: false, width: 2 };
+  // The models in ranking order; the best `data.shown` visible when the page opens.
+  const models = data.models.map((model, k) => ({ ...model, style: {
+    color: palette[k % palette.length], dash: dashes[k % dashes.length],
+    hidden: k >= data.shown, width: 1.4 } }));
   figure("loops", data.input_label, data.output_label,
-    [curve("measured", data.input, data.measured, measuredColor, true)].concat(
-      models.map((m) => curve(m.name, data.input, m.simulated, m.color, true))), false);
-  figure("outputs", "sample", data.output_label,
-    [curve("measured", data.sample, data.measured, measuredColor, false)].concat(
-      models.map((m) => curve(m.name, data.sample, m.simulated, m.color, false))), true);
-  figure("errors", "sample", `measured - simulated (${data.output_label})`,
-    models.map((m) => curve(m.name, data.sample, data.measured.map((y, k) => y - m.simulated[k]),
-      m.color, false)), true);
+    [curve("measured", data.input, data.measured, measured, true)].concat(
+      models.map((m) => curve(m.name, data.input, m.simulated, m.style, true))), false);
+  figure("outputs", alongLabel, data.output_label,
+    [curve("measured", along, data.measured, measured, false)].concat(
+      models.map((m) => curve(m.name, along, m.simulated, m.style, false))), true);
+  figure("errors", alongLabel, errorLabel,
+    models.map((m) => curve(m.name, along, data.measured.map((y, k) => y - m.simulated[k]),
+      m.style, false)), true);
 
   // The ranking table sorts by the clicked column (numbers as numbers; failed rows stay last).
   const table = document.getElementById("ranking");
@@ -209,6 +228,31 @@
       chart.data.datasets.filter((set, k) => chart.isDatasetVisible(k)).length);
     const first = models.length ? models[0].name : "measured";
     const result = { figures: charts.length, before: visible() };
+    result.hidden_at_open = charts.length ? charts[0].data.datasets.filter((set, k) =>
+      !charts[0].isDatasetVisible(k)).length : 0;
+    // What the figures look like: each model's colour and dash (distinct pairs), the measurement
+    // first (on top) in black, the axes' titles, and any title longer than its axis (clipped).
+    const styles = models.map((m) => `${m.style.color} ${m.style.dash.join(",")}`);
+    result.distinct_styles = new Set(styles).size === styles.length;
+    result.measured_on_top = charts.slice(0, 2).every((chart) =>
+      chart.data.datasets[0].label === "measured" &&
+      chart.data.datasets[0].borderColor === measuredColor);
+    result.axes = charts.map((chart) =>
+      [chart.options.scales.x.title.text, chart.options.scales.y.title.text]);
+    result.clipped = [];
+    for (const chart of charts) {
+      for (const axis of ["x", "y"]) {
+        const scale = chart.scales[axis];
+        const font = Chart.helpers.toFont(scale.options.title.font);
+        chart.ctx.save();
+        chart.ctx.font = font.string;
+        const width = chart.ctx.measureText(scale.options.title.text).width;
+        chart.ctx.restore();
+        const room = axis === "x" ? chart.width : chart.height;
+        if (width > room) result.clipped.push(scale.options.title.text);
+      }
+    }
+    result.chart_width = charts.length ? charts[0].width : 0;
     toggle(first);
     result.hidden = first;
     result.after = visible();

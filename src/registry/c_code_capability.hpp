@@ -14,7 +14,9 @@ std::function<CCode(const DynamicModel&, const CExportOptions&)> c_code_of() {
   return [](const DynamicModel& model, const CExportOptions& options) {
     const CWriter writer(options.prefix, options.scalar);
     return with_concrete<Codecs...>(model, [&](const auto& concrete, const auto& state) {
-      return assemble_c_files(writer, emit_c(concrete, state, writer, options), options.source);
+      auto code = emit_c(concrete, state, writer, options);
+      if (options.domain) add_c_domain(writer, *options.domain, code);
+      return assemble_c_files(writer, code, options.source);
     });
   };
 }

@@ -21,6 +21,7 @@
 #include "hyst/io/limits.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
+#include "model_adapter.hpp"
 
 namespace hyst {
 namespace {
@@ -122,6 +123,32 @@ FittedDomain domain_of_fit_part(std::span<const double> input, std::span<const d
 }
 
 }  // namespace
+
+namespace detail {
+
+FittedDomain records_domain(std::span<const FitRecord> records,
+                            std::span<const double> sample_times, const DynamicModel& model) {
+  std::vector<FittedDomain> parts;
+  parts.reserve(records.size());
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& record = records[r];
+    std::optional<double> step =
+        sample_times.empty() ? model.sample_time() : std::optional(sample_times[r]);
+    if (step) *step /= static_cast<double>(std::max<std::size_t>(record.oversampling, 1));
+    auto part = fitted_domain(record.input, record.input, step);
+    const auto [low, high] = std::minmax_element(record.output.begin(), record.output.end());
+    if (low != record.output.end()) {
+      part.output_min = *low;
+      part.output_max = *high;
+    }
+    parts.push_back(part);
+  }
+  auto domain = merged_domain(parts);
+  domain.largest_time_constant = largest_time_constant(model);
+  return domain;
+}
+
+}  // namespace detail
 
 void require_fit_record_count(std::size_t count) {
   if (count > io::limits::kMaxFitRecords)

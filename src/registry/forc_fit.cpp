@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "field_table.hpp"
 #include "hyst/core/error.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "tabulated_preisach_model.hpp"
 
 namespace hyst {
@@ -64,6 +66,13 @@ std::vector<ReversalCurve> reversal_curves(const io::MicromagForcFile& file) {
 ForcModelFit fit_forc_curves(std::span<const ReversalCurve> curves,
                              const PreisachForcFitOptions& options) {
   auto fit = fit_preisach_forcs(curves, options);
+  // The domain of the curves fitted (the held-out ones are not); FORCs have no time axis.
+  std::vector<FittedDomain> parts;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    if (std::find(options.held_out.begin(), options.held_out.end(), k) == options.held_out.end())
+      parts.push_back(fitted_domain(curves[k].input, curves[k].output));
+  }
+  if (!parts.empty()) fit.report.domain = merged_domain(parts);
   ForcModelFit result{detail::tabulated_preisach_model(fit.model), std::move(fit.report),
                       options.held_out, options};
   result.options.lower = fit.model.lower();

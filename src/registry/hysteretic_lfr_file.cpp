@@ -65,10 +65,13 @@ FeedbackModels feedback_models(const std::vector<const DynamicModel*>& feedback)
   return result;
 }
 
+// A by its order: a change of state coordinates changes A's entries but not the model, which
+// its n eigenvalues (in the real modal form of the fits: one radius and angle per complex pair,
+// one value per real pole) determine together with B and C.
 std::size_t linear_parameters(const StateSpace& linear, std::size_t feedback) {
   const auto& p = linear.params();
   const auto q = std::size_t(feedback);
-  return std::size_t(p.a.size() + p.b.size() + p.c.size() + p.d.size()) - q * q;
+  return std::size_t(p.a.rows() + p.b.size() + p.c.size() + p.d.size()) - q * q;
 }
 
 template <class H>
@@ -85,6 +88,7 @@ std::vector<H> blocks_of(const std::vector<AnyHysteresis>& models) {
 AnyHystereticLfr::AnyHystereticLfr(AnyHystereticLfrModel model, nlohmann::json feedback,
                                    std::string name, std::size_t feedback_parameters)
     : model_(std::move(model)), feedback_(std::move(feedback)), feedback_name_(std::move(name)) {
+  feedback_parameter_count_ = feedback_parameters;
   parameter_count_ = linear_parameters(linear(), feedback_.size()) + feedback_parameters;
 }
 

@@ -40,6 +40,8 @@
 #include "field_table.hpp"
 #include "hyst/core/invert.hpp"
 #include "hyst/core/simulate.hpp"
+#include "hyst/identify/fit_record.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 #include "hyst/registry/model_registry.hpp"
 
@@ -47,6 +49,11 @@ namespace hyst::detail {
 
 // Throws hyst::Error unless `seconds` is a sample time (finite, > 0); `model` names the model.
 void require_sample_time(std::string_view model, double seconds);
+// The domain of the records a model was fitted on together (merged_domain() of each record's),
+// each record at its sample time (`sample_times`, else the model's own, else none); a record
+// with oversampling has its input at that many steps per output sample.
+FittedDomain records_domain(std::span<const FitRecord> records,
+                            std::span<const double> sample_times, const DynamicModel& model);
 // Throws hyst::Error naming both sample times unless `seconds` is within 0.1 % of `own`, the
 // sample time of the discrete model `model` (none: fitted without a time axis, any is taken).
 void require_own_sample_time(std::string_view model, std::optional<double> own, double seconds);
@@ -323,9 +330,11 @@ void set_records_fitter(ModelEntry& entry, FieldTable<Options> table, Fit fit) {
       }
     }
     auto result = fit(records, options);
-    return {std::make_unique<ModelAdapter<Codec>>(std::move(result.model),
-                                                  std::move(result.initial_state)),
-            std::move(result.report)};
+    FitOutcome outcome{std::make_unique<ModelAdapter<Codec>>(std::move(result.model),
+                                                             std::move(result.initial_state)),
+                       std::move(result.report)};
+    outcome.report.domain = records_domain(records, sample_times, *outcome.model);
+    return outcome;
   };
 }
 

@@ -341,6 +341,13 @@ case_fit_system_evaluate() {
     expect_stdout "hysteretic_lfr: 44 states, 3 inputs, 3 outputs, 6 'pi' feedback channels"
     awk '$1 == "mean" { if ($3 + 0 >= 10 || $3 + 0 <= 0) exit 1; seen = 1 } END { exit !seen }' \
       "$WORK/stdout" || fail "FSM hysteretic LFR not below 10 % at 100 mV: $(cat "$WORK/stdout")"
+    # Its count: A by its 44 eigenvalues, B (44 x 9), C (9 x 44), D (9 x 9) less the 6 x 6 zero
+    # Dzw, and the 6 channels' 7 PI parameters each: 44 + 396 + 396 + 45 + 42 = 923; the fit
+    # held each channel's r = 0 weight and offset fixed and counted 911.
+    expect_ok "$HYST" info "$HYST_EXAMPLE_CONFIG_DIR/../models/fsm_hysteretic_lfr.json"
+    expect_stdout "parameters:  923 (A by its 44 eigenvalues" "the channels' 42)" "fitted:      911 (info.fit.parameters"
+    expect_ok "$HYST" info "$HYST_EXAMPLE_CONFIG_DIR/../models/fsm_linear_state_space.json"
+    expect_stdout "parameters:  205 (A by its 28 eigenvalues"
     expect_ok "$HYST" evaluate --model "$HYST_EXAMPLE_CONFIG_DIR/../models/fsm_hysteretic_lfr.json" \
       --input-npy "$fsm/u_200mV_test.npy" --output-npy "$fsm/y_200mV_test.npy" --periodic
     awk '$1 == "mean" { if ($3 + 0 >= 4.84 || $3 + 0 <= 0) exit 1; seen = 1 } END { exit !seen }' \
@@ -527,6 +534,17 @@ case_compare() {
   grep -q '^1,pi,' cmp/ranking.csv || fail "pi did not run: $(cat cmp/ranking.csv)"
   # Without --out-dir: the current folder.
   expect_ok "$HYST" compare --data short.csv --input v --output y --models pi --no-plots
+  # A held-out quarter of twice the fit part's amplitude: extrapolation, said in the tables and
+  # on stderr; with --strict, exit status 1 after the tables are written.
+  awk 'BEGIN { print "v,y"; for (k = 0; k < 400; ++k) { a = k < 300 ? 1 : 2; v = a * sin(k / 8); print v "," 2 * v } }' >grow.csv
+  run "$HYST" compare --data grow.csv --input v --output y --models pi --no-plots --out-dir grow
+  [ "$STATUS" -eq 0 ] || fail "compare of a growing record: exit status $STATUS"
+  expect_stdout "The held-out part leaves the domain the models were fitted on"
+  grep -q "hyst: warning: The held-out part leaves the domain the models were fitted on (their scores there measure extrapolation): pi: [0-9]* of 100 samples: inputs below the fitted range .*; [0-9]* of 100 samples: inputs above" "$WORK/stderr" ||
+    fail "no domain warning: $(cat "$WORK/stderr")"
+  expect_error 1 "inputs above the fitted range" -- "$HYST" compare --data grow.csv --input v \
+    --output y --models pi --no-plots --out-dir grow --strict
+  [ -s grow/ranking.md ] || fail "--strict wrote no ranking.md"
   [ -s ranking.md ] && [ -s ranking.csv ] || fail "no ranking.md / ranking.csv in the current folder"
   expect_error 1 "--option 'pi.operators': expected MODEL.KEY=VALUE" -- \
     "$HYST" compare --data data.csv --input v --output y --option pi.operators --out-dir cmp
@@ -564,10 +582,17 @@ case_compare_records() {
   awk -F, '$2 == "pi" && !($4 < 1e-6) { exit 1 }' cmp/ranking.csv ||
     fail "pi does not predict the held-out record exactly: $(cat cmp/ranking.csv)"
   [ ! -e cmp/loops.png ] || fail "the cross-record ranking writes no plots"
-  expect_ok "$HYST" compare --data records.csv --fit-records v1:y1,v2:y2 --leave-one-out \
+  # Held out, the large record v1 leaves the domain of the small one: said in the table and as a
+  # warning.
+  run "$HYST" compare --data records.csv --fit-records v1:y1,v2:y2 --leave-one-out \
     --models pi --option "pi.thresholds=$KNOWN_THRESHOLDS" --validation-start rest \
     --validation-align none --out-dir cmp
-  expect_stdout "Leave-one-out over the records v1:y1, v2:y2" "mean held-out NRMSE [%] | worst held-out NRMSE [%]"
+  [ "$STATUS" -eq 0 ] || fail "leave-one-out: exit status $STATUS"
+  expect_stdout "Leave-one-out over the records v1:y1, v2:y2" "mean held-out NRMSE [%] | worst held-out NRMSE [%]" \
+    "Held-out record 'v1:y1' leaves the domain the models were fitted on"
+  grep -q "hyst: warning: Held-out record 'v1:y1' leaves the domain the models were fitted on (their scores there measure extrapolation): pi: [0-9]* of 300 samples: inputs below" "$WORK/stderr" ||
+    fail "no domain warning for v1:y1: $(cat "$WORK/stderr")"
+  grep -q "v2:y2" "$WORK/stderr" && fail "v2:y2 lies inside the domain of v1:y1: $(cat "$WORK/stderr")"
   grep -q '^1,pi,[a-z ]*,[0-9.e+-]*,[0-9.e+-]*,"v1:y1",' cmp/ranking.csv ||
     fail "the worst held-out record should be v1:y1: $(cat cmp/ranking.csv)"
   expect_error 1 "--fit-records needs either --validate-records or --leave-one-out" -- \
@@ -611,29 +636,46 @@ case_compare_html() {
   # by a column, and writes what it saw into <pre id="selftest">; no script error is logged.
   command -v chromium >/dev/null ||
     fail "chromium is not installed (Debian package chromium; make deps installs it)"
-  # Bouc-Wen is only a second row of the page: a short fit (no global stage, 20 iterations).
+  # Seven models with fast fits: the best five are drawn when the page opens, two are hidden.
   write_pi_model known.json "$KNOWN_THRESHOLDS" "$KNOWN_WEIGHTS" 0
   write_input_csv in.csv 800
   expect_ok "$HYST" simulate --model known.json --input in.csv --out data.csv
   mkdir cmp
-  expect_ok "$HYST" compare --data data.csv --input v --output y --models pi,bouc_wen \
-    --option "pi.thresholds=$KNOWN_THRESHOLDS" --option bouc_wen.global_evaluations=0 \
-    --option bouc_wen.max_iterations=20 --out-dir cmp --no-plots --html cmp/report.html
+  expect_ok "$HYST" compare --data data.csv --input v --output y \
+    --models pi,kp,preisach,maxwell_slip,modified_pi,rate_dependent_pi,backlash_like \
+    --option "pi.thresholds=$KNOWN_THRESHOLDS" --out-dir cmp --no-plots --html cmp/report.html \
+    --sample-time 0.001 --input-unit V --output-unit um
   expect_stdout "; cmp/report.html"
   timeout 120 chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 \
-    --enable-logging=stderr --v=0 --dump-dom "file://$WORK/cmp/report.html#selftest" \
+    --window-size=1400,900 --enable-logging=stderr --v=0 \
+    --dump-dom "file://$WORK/cmp/report.html#selftest" \
     >dom.html 2>chromium.log || fail "chromium failed: $(tail -n 5 chromium.log)"
+  # The title names the file, not the path as typed; the error columns carry the unit.
+  grep -q '<h1>Model comparison: v -&gt; y (data.csv)</h1>' dom.html || fail "title: $(grep -o '<h1>.*</h1>' dom.html)"
+  grep -q '<th>validation RMSE \[um\]</th><th>max error \[um\]</th>' dom.html ||
+    fail "no units in the table header: $(grep -o '<thead>.*</thead>' dom.html)"
   grep -q '<table id="ranking">' dom.html || fail "no ranking table in the rendered page"
-  [ "$(grep -o '<tr class="fitted">' dom.html | wc -l)" -eq 2 ] || fail "the table should show 2 fitted models"
+  [ "$(grep -o '<tr class="fitted">' dom.html | wc -l)" -eq 7 ] || fail "the table should show 7 fitted models"
   for id in loops outputs errors; do
     grep -q "<figure id=\"$id\">" dom.html || fail "figure '$id' missing in the rendered page"
   done
-  # Loops and outputs: measured, pi, bouc_wen; errors: pi, bouc_wen. Hiding the best model (pi)
-  # takes one curve from each figure; showing it again restores them. Sorted by model name,
-  # descending, bouc_wen is last: pi first.
-  local selftest='{"figures":3,"before":[3,3,2],"hidden":"pi","after":[2,2,1],"restored":[3,3,2],"sorted_descending_first":"pi","errors":""}'
-  grep -qF "<pre id=\"selftest\" hidden=\"\">$selftest</pre>" dom.html ||
-    fail "the page's self-test: $(grep -o '<pre id="selftest"[^<]*</pre>' dom.html)"
+  # Loops and outputs: measured and the best five; errors: the five. Hiding the best model (pi,
+  # exact with its thresholds) takes one curve from each figure; showing it again restores
+  # them. Sorted by model name, descending: rate_dependent_pi first.
+  # Every model its own colour and dash, the black measurement first (drawn on top), the units
+  # and the time axis on the axes' titles, none longer than its axis, the figures as wide as the
+  # window allows (1400 px less the margins).
+  grep -o '<pre id="selftest"[^<]*</pre>' dom.html | sed 's/<[^>]*>//g' >selftest.json
+  python3 -c "
+import json
+t = json.load(open('selftest.json'))
+assert t['figures'] == 3 and t['before'] == [6, 6, 5] and t['hidden_at_open'] == 2, t
+assert t['hidden'] == 'pi' and t['after'] == [5, 5, 4] and t['restored'] == [6, 6, 5], t
+assert t['sorted_descending_first'] == 'rate_dependent_pi' and t['errors'] == '', t
+assert t['distinct_styles'] and t['measured_on_top'], t
+assert t['axes'] == [['v [V]', 'y [um]'], ['time [s]', 'y [um]'], ['time [s]', 'error [um]']], t
+assert t['clipped'] == [] and t['chart_width'] > 1200, t
+" || fail "the page's self-test: $(cat selftest.json)"
   grep -qF '<pre id="page-errors" hidden=""></pre>' dom.html ||
     fail "script errors: $(grep -o '<pre id="page-errors"[^<]*</pre>' dom.html)"
   ! grep -q 'Uncaught\|CONSOLE.*[Ee]rror' chromium.log || fail "console errors: $(cat chromium.log)"
@@ -1267,6 +1309,9 @@ assert [t['table'] for t in tables] == [6, 1], tables
 assert abs(tables[0]['sample_time'] - 0.0025) < 1e-12 and abs(tables[1]['sample_time'] - 0.025) < 1e-12, tables
 assert m['info']['fit']['samples'] == 802 and m['info']['fit']['nrmse_percent'] < 4, m['info']['fit']
 assert abs(m['params']['sample_time'] - 0.0025) < 1e-12, m['params']['sample_time']
+# The domain of both tables: 401 samples each, at 2.5 ms and at 25 ms.
+d = m['info']['domain']
+assert abs(d['sample_time'] - 0.0025) < 1e-12 and abs(d['duration'] - 401 * 0.0275) < 1e-6, d
 " || fail "modified_pi_creep fitted on tables 6 and 1"
   expect_error 1 "--tables: model 'pi' has no fit of several records (models with one: pi_creep" -- \
     "$HYST" fit pi --data "$AIX" --tables 6,1 --input V+ --output P1 --out x.json
@@ -1357,16 +1402,18 @@ case_data_info() {
     "summary: 34 columns, 10 rows" "table 10: 13 columns, 401 rows; SampleName TEST_800V" \
     "Waveform triangle" "Hysteresis Amplitude [V] 1400" "uC/cm2"
   # The butterfly: the displacement D1 turns twice per voltage period (two lobes).
-  grep -E '^  D1 +nm +401 +-655.562 +990.851 +4 +2$' "$WORK/stdout" >/dev/null ||
+  grep -E '^  D1 +nm +401 +-655.562 +990.851 +4 +2( |$)' "$WORK/stdout" >/dev/null ||
     fail "table 1 D1 line: $(grep -m1 '^  D1' "$WORK/stdout")"
   # One triangular period per table: V+ has one maximum and one minimum and is one cycle; the
   # time column never turns.
   expect_ok "$HYST" data info "$AIX" --table 6
-  grep -E '^  V\+ +V +401 +-1322.53 +1467.32 +2 +1$' "$WORK/stdout" >/dev/null ||
+  grep -E '^  V\+ +V +401 +-1322.53 +1467.32 +2 +1( |$)' "$WORK/stdout" >/dev/null ||
     fail "table 6 V+ line: $(grep 'V+' "$WORK/stdout")"
   grep -E '^  Time +s +401 +0 +1 +0 +0$' "$WORK/stdout" >/dev/null ||
     fail "table 6 Time line: $(grep 'Time' "$WORK/stdout")"
   grep -q "^table 1:" "$WORK/stdout" && fail "--table 6 shows table 1"
+  # The export's own Time column is the time axis: 401 samples over 1 s.
+  expect_stdout "  time axis: column 'Time', uniform, sample time 0.0025 s, duration 1 s"
   # Loop figures of P1(V+), against the instrument's own (table 6 metadata: Wloss 46029.4,
   # Vc+ 1131.47, Vc- -1010.17, Pr+ 9.69639).
   expect_ok "$HYST" data info "$AIX" --table 6 --loop V+,P1
@@ -1386,6 +1433,14 @@ assert (v['unit'], v['samples'], v['reversals'], v['cycles']) == ('V', 401, 2, 1
   expect_stdout "CSV, 2 columns" "table: 2 columns, 81 rows"
   grep -E '^  v +81 +-10 +10 +4 +2$' "$WORK/stdout" >/dev/null ||
     fail "tri.csv v line: $(grep '^  v' "$WORK/stdout")"
+  # With its time column (1 s per sample): rate 1 per s, the longest run between reversals from
+  # 10 to 30 s, 20 s.
+  expect_ok "$HYST" data info tri.csv --time t
+  expect_stdout "  time axis: column 't', uniform, sample time 1 s, duration 80 s" \
+    "max rate [/s]  longest run [s]"
+  grep -E '^  v +81 +-10 +10 +4 +2 +1 +20$' "$WORK/stdout" >/dev/null ||
+    fail "tri.csv --time t v line: $(grep '^  v' "$WORK/stdout")"
+  expect_error 1 "tri.csv: no table has the time column 'time'" -- "$HYST" data info tri.csv --time time
   expect_ok "$HYST" data info "$HYST_SHARED_DATA_DIR/piezo_pzt_aixacct_butterfly/MeasurementData.mat"
   expect_stdout "MATLAB .mat file, 10 variables" "Vplus_19kv"
   # A MicroMag VSM loop: a down and an up branch of 201 points each (its header: "Number of
@@ -1549,7 +1604,11 @@ assert m['params']['initial_state'] == 'positive_saturation'
   expect_ok "$HYST" info agm.json
   expect_stdout "model:      tabulated_preisach" "inverse:    yes"
   printf 'v\n0.3\n-0.1\n0.05\n-0.2\n0.1\n' >h.csv
-  expect_ok "$HYST" simulate --model agm.json --input h.csv --column v --out m.csv
+  # The fit recorded the fields of its curves as its domain: 0.3 T lies above them.
+  run "$HYST" simulate --model agm.json --input h.csv --column v --out m.csv
+  [ "$STATUS" -eq 0 ] || fail "simulate agm.json: exit status $STATUS"
+  grep -q "agm.json: h.csv column 'v': outside the domain the model was fitted on: 1 of 5 samples: inputs above the fitted range" "$WORK/stderr" ||
+    fail "no domain warning for 0.3 T: $(cat "$WORK/stderr")"
   expect_ok "$HYST" invert --model agm.json --target m.csv --column y --out h2.csv
   # The Series 0016 test file: 16 curves of k + 2 points (k = 0..15); every 4th held out:
   # curves 4, 8, 12, 16 with 5 + 9 + 13 + 17 = 44 points, 108 left to fit.

@@ -74,6 +74,54 @@ TEST_F(RecordInfoTest, CsvColumnsWithKnownFigures) {
   EXPECT_TRUE(record_info(path, options).tables.front().loops.empty());
 }
 
+TEST_F(RecordInfoTest, TimeAxisRatesAndLongestRuns) {
+  // The triangle of write_triangle() (steps of 1 per sample, reversals at 10, 30, 50, 70) at
+  // 0.5 s per sample: rate 2 per s, longest run 20 samples = 10 s, duration 40 s.
+  io::Table table;
+  const auto v = test::triangle(10, 2);
+  std::vector<double> t;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    t.push_back(0.5 * static_cast<double>(k));
+  table.add_column("t", t);
+  table.add_column("v", v);
+  io::write_csv(dir_ / "timed.csv", table);
+  RecordInfoOptions options;
+  options.time = "t";
+  const auto info = record_info(dir_ / "timed.csv", options);
+  const auto& timed = info.tables.front();
+  ASSERT_TRUE(timed.time.has_value());
+  EXPECT_EQ(timed.time->column, "t");
+  EXPECT_TRUE(timed.time->uniform);
+  EXPECT_DOUBLE_EQ(timed.time->sample_time, 0.5);
+  EXPECT_DOUBLE_EQ(timed.time->duration, 40.0);
+  EXPECT_FALSE(timed.columns[0].largest_rate);  // the time column itself
+  ASSERT_TRUE(timed.columns[1].largest_rate);
+  EXPECT_DOUBLE_EQ(*timed.columns[1].largest_rate, 2.0);
+  EXPECT_DOUBLE_EQ(*timed.columns[1].longest_run, 10.0);
+  const auto json = record_info_json(info);
+  EXPECT_EQ(json["tables"][0]["time"]["sample_time"], 0.5);
+  EXPECT_EQ(json["tables"][0]["columns"][1]["longest_run"], 10.0);
+  // Without the option a CSV has no time axis.
+  EXPECT_FALSE(record_info(dir_ / "timed.csv", {}).tables.front().time);
+
+  // One step of 1 s among steps of 0.5 s: not uniform; each rate is over its own step.
+  for (std::size_t k = 5; k < t.size(); ++k)
+    t[k] += 0.5;
+  table.columns[0] = t;
+  io::write_csv(dir_ / "gap.csv", table);
+  const auto gap = record_info(dir_ / "gap.csv", options).tables.front();
+  EXPECT_FALSE(gap.time->uniform);
+  EXPECT_DOUBLE_EQ(gap.time->min_step, 0.5);
+  EXPECT_DOUBLE_EQ(gap.time->max_step, 1.0);
+  EXPECT_DOUBLE_EQ(*gap.columns[1].largest_rate, 2.0);
+
+  options.time = "time";
+  EXPECT_HYST_ERROR(record_info(dir_ / "timed.csv", options),
+                    "timed.csv: no table has the time column 'time'");
+  options.time = "v";  // not increasing
+  EXPECT_HYST_ERROR(record_info(dir_ / "timed.csv", options), "time column 'v'");
+}
+
 TEST_F(RecordInfoTest, Errors) {
   const auto path = write_triangle();
   RecordInfoOptions options;

@@ -238,10 +238,13 @@ TEST(HystereticLfrFile, RoundTripSimulatesTheSame) {
   const auto a = registry_pi(1.0), b = registry_pi(2.0);
   const AnyHystereticLfr model(lfr.linear(), 2, {a.get(), b.get()});
   EXPECT_EQ(model.feedback_model(), "pi");
-  // 4x4 + 4x4 + 5x4 + 5x4 entries less the 2x2 zero Dzw, and 2 x 4 PI parameters (3 weights and
-  // the offset; the thresholds are fixed by the fit and not counted: see the PI's entry).
-  EXPECT_EQ(model.parameter_count(),
-            16u + 16u + 20u + 20u - 4u + 2u * registry_pi(1)->parameter_count());
+  // A (4 states) by its 4 eigenvalues, B (4 x 4), C (5 x 4) and D (5 x 4) less the 2 x 2 zero
+  // Dzw, and 2 x 4 PI parameters (3 weights and the offset; the thresholds are fixed by the fit
+  // and not counted: see the PI's entry).
+  ASSERT_EQ(lfr.linear().order(), 4u);
+  ASSERT_EQ(registry_pi(1)->parameter_count(), 4u);
+  EXPECT_EQ(model.feedback_parameter_count(), 8u);
+  EXPECT_EQ(model.parameter_count(), 4u + 16u + 20u + 20u - 4u + 8u);
   const MatrixXd u = random_input(300, 2, 52);
   const MatrixXd expected = lfr.simulate(u);
   EXPECT_EQ(model.simulate(u), expected);

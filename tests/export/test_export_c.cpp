@@ -245,6 +245,64 @@ TEST_F(ExportCTest, PrandtlIshlinskiiAndItsInverse) {
   check_everything(c, kFloatBound);
 }
 
+TEST_F(ExportCTest, TheFittedDomainCountsInputsAndTargetsBeyondIt) {
+  // Fitted on inputs [-1, 1] and outputs [0, 4]: widened by 5 % of the widths, [-1.1, 1.1] and
+  // [-0.2, 4.2]. The same samples through the library's checks give the same counts.
+  const auto model = model_from_json(
+      model_document("pi", {{"thresholds", {0.0, 0.2}}, {"weights", {0.9, 0.5}}, {"offset", 0.0}}),
+      "test");
+  FittedDomain domain;
+  domain.input_min = -1.0;
+  domain.input_max = 1.0;
+  domain.output_min = 0.0;
+  domain.output_max = 4.0;
+  CExportOptions options;
+  options.prefix = "ranged";
+  options.domain = domain;
+  const CCode code = export_c(*model, dir_, options);
+  ASSERT_TRUE(code.has_inverse);
+  EXPECT_NE(code.header.find("int ranged_check_input("), std::string::npos);
+  std::ofstream(dir_ / "ranged_driver.c") << R"(#include <math.h>
+#include <stdio.h>
+#include "ranged.h"
+int main(void) {
+  const double inputs[] = {0.0, 1.05, 1.2, -1.3, NAN, 0.5};
+  const double targets[] = {4.1, 4.3, -0.1, -0.25};
+  ranged_domain_status status;
+  unsigned int k;
+  ranged_domain_status_reset(&status);
+  for (k = 0; k < 6; ++k) printf("%d ", ranged_check_input(&ranged_DOMAIN, &status, inputs[k]));
+  printf("%lu %lu %lu\n", status.samples, status.outside, status.first_outside);
+  ranged_domain_status_reset(&status);
+  for (k = 0; k < 4; ++k) printf("%d ", ranged_check_target(&ranged_DOMAIN, &status, targets[k]));
+  printf("%lu %lu %lu %d\n", status.samples, status.outside, status.first_outside,
+         ranged_check_input(&ranged_DOMAIN, NULL, 2.0));
+  return 0;
+}
+)";
+  std::string log;
+  ASSERT_EQ(test::run_command(
+                fmt::format("cd '{}' && gcc -std=c99 -Wall -Wextra -Werror -pedantic -o ranged "
+                            "ranged_driver.c ranged.c -lm 2>&1",
+                            dir_.string()),
+                &log),
+            0)
+      << log;
+  std::string printed;
+  ASSERT_EQ(test::run_command(fmt::format("cd '{}' && ./ranged", dir_.string()), &printed), 0);
+  EXPECT_EQ(printed, "1 1 0 0 0 1 6 3 2\n1 0 1 0 4 2 1 0\n");
+  const std::vector<double> inputs{0.0, 1.05, 1.2, -1.3, std::nan(""), 0.5};
+  const auto library = check_inputs(domain, inputs);
+  std::size_t outside = 0;
+  for (const auto& excursion : library.excursions)
+    outside += excursion.samples;
+  EXPECT_EQ(outside, 3u);
+
+  // Without a domain, none of it.
+  options.domain.reset();
+  EXPECT_EQ(generate_c(*model, options).header.find("check_input"), std::string::npos);
+}
+
 TEST_F(ExportCTest, InversePrandtlIshlinskiiWithInputLimits) {
   Case c{model_document(
       "pi", {{"thresholds", {0.0, 0.2, 0.4}}, {"weights", {0.9, 0.5, 0.3}}, {"offset", 0.0}})};

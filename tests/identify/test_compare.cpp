@@ -35,6 +35,51 @@ const ComparedModel& row_of(const ModelComparison& comparison, const std::string
   return *found;
 }
 
+TEST(CompareModels, SaysWhereTheHeldOutPartLeavesTheFittedDomain) {
+  // Amplitude 1 in the first three quarters (the fit part), 2 in the held-out quarter: its
+  // inputs beyond 1 + 5 % of the width 2 (1.1) are extrapolation for every model.
+  std::vector<double> v;
+  for (int k = 0; k < 800; ++k)
+    v.push_back((k < 600 ? 1.0 : 2.0) * std::sin(2.0 * std::numbers::pi * k / 100.0));
+  CompareOptions options;
+  options.models = {"pi", "kp"};
+  options.fit_options["pi"] = {{"thresholds", kThresholds}};
+  options.fit_options["kp"] = {{"levels", 8}};
+  options.timing_seconds = 0.0;
+  const auto comparison = compare_models(v, pi_output(v), options);
+  std::size_t beyond = 0, first = v.size();
+  for (std::size_t k = 600; k < v.size(); ++k) {
+    if (std::abs(v[k]) > 1.1) {
+      ++beyond;
+      first = std::min(first, k - 600);
+    }
+  }
+  for (const auto& row : comparison.ranking) {
+    SCOPED_TRACE(row.model + ": " + row.error);
+    ASSERT_TRUE(row.ok);
+    EXPECT_FALSE(row.held_out_domain.inside());
+    std::size_t counted = 0;
+    for (const auto& excursion : row.held_out_domain.excursions) {
+      counted += excursion.samples;
+      EXPECT_GE(excursion.first, first);
+    }
+    EXPECT_EQ(counted, beyond);
+  }
+  const auto line = held_out_domain_line(comparison);
+  // One group: both models leave their domains alike (named in the ranking's order).
+  const auto group = comparison.ranking.front().model + ", " + comparison.ranking.back().model;
+  EXPECT_NE(line.find(group + ": "), std::string::npos) << line;
+  EXPECT_NE(model_comparison_markdown(comparison).find(line), std::string::npos);
+
+  // Same amplitude throughout: inside, no line.
+  std::vector<double> steady(v.begin(), v.begin() + 600);
+  steady.insert(steady.end(), v.begin(), v.begin() + 200);
+  const auto inside = compare_models(steady, pi_output(steady), options);
+  for (const auto& row : inside.ranking)
+    EXPECT_TRUE(row.held_out_domain.inside()) << row.model;
+  EXPECT_EQ(held_out_domain_line(inside), "");
+}
+
 TEST(CompareModels, PiRecordRanksPiFirst) {
   const auto v = test::random_walk(1200, 5);
   const auto y = pi_output(v);

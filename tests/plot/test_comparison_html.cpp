@@ -47,8 +47,12 @@ TEST(ComparisonHtml, TableFiguresAndTheDataOfEveryFittedModel) {
   options.models = {"pi", "narx"};
   options.timing_seconds = 0.0;
   const auto comparison = compare_models(v, y, options);
-  const auto html = plot::model_comparison_html(comparison, v, y, "PI <test> & more",
-                                                {"V+ [V]", "y </script> [m]"});
+  std::vector<double> time;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    time.push_back(0.5 + 0.01 * static_cast<double>(k));
+  const auto html = plot::model_comparison_html(
+      comparison, v, y, "PI <test> & more",
+      {.input = "V+ [V]", .output = "y </script> [m]", .output_unit = "m", .time = time});
 
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<h1>PI &lt;test&gt; &amp; more</h1>"), std::string::npos);
@@ -66,6 +70,8 @@ TEST(ComparisonHtml, TableFiguresAndTheDataOfEveryFittedModel) {
   EXPECT_NE(html.find("heldOutShading"), std::string::npos);
   EXPECT_EQ(count(html, " src="), 0u);
   EXPECT_EQ(count(html, "y </script> [m]"), 0u);  // a label cannot end the data's element
+  // The error columns carry the output's unit.
+  EXPECT_EQ(count(html, "<th>validation RMSE [m]</th><th>max error [m]</th>"), 1u);
 
   const auto data = page_data(html);
   EXPECT_EQ(data["input_label"], "V+ [V]");
@@ -78,6 +84,17 @@ TEST(ComparisonHtml, TableFiguresAndTheDataOfEveryFittedModel) {
   EXPECT_EQ(data["models"][0]["name"], "pi");
   EXPECT_EQ(data["models"][0]["simulated"].get<std::vector<double>>(),
             comparison.ranking[0].simulated);
+  // The time axis, and where the held-out part starts on it.
+  EXPECT_EQ(data["time"].get<std::vector<double>>(), time);
+  EXPECT_EQ(data["validation_begin_time"], time[comparison.split.validation_begin]);
+  EXPECT_EQ(data["output_unit"], "m");
+  EXPECT_EQ(data["shown"], plot::kComparisonPageShownModels);
+  // Without a time axis, none; a time axis of another length is refused.
+  EXPECT_FALSE(page_data(plot::model_comparison_html(comparison, v, y, "t")).contains("time"));
+  plot::ComparisonPageLabels short_time;
+  short_time.time = time;
+  short_time.time.pop_back();
+  EXPECT_THROW(plot::model_comparison_html(comparison, v, y, "t", short_time), Error);
 }
 
 // Long records are thinned to evenly spaced samples, the last one kept, so the page stays small.

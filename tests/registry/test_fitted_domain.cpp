@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -132,6 +135,88 @@ TEST(FittedDomain, TheFitOfAModelByNameRecordsItsFitPart) {
   EXPECT_LE(outcome.report.domain->input_max, 1.0);
   EXPECT_GT(outcome.report.domain->input_max, 0.99);
   EXPECT_NE(outcome.report.full().find("fitted domain"), std::string::npos);
+}
+
+TEST(FittedDomain, OfSeveralRecordsAtTheirOwnSampleTimes) {
+  // Record a: 10 samples at 0.01 s, steps of 1 (100 per s), one rising run of 10 samples (0.1 s).
+  // Record b: 5 samples at 0.1 s, steps of 2 (20 per s), rising for 5 samples (0.5 s).
+  FittedDomain a, b;
+  a.input_min = -1, a.input_max = 8, a.output_min = 0, a.output_max = 2, a.samples = 10;
+  a.largest_input_step = 1, a.longest_hold_samples = 10, a.sample_time = 0.01;
+  b.input_min = 0, b.input_max = 9, b.output_min = -3, b.output_max = 1, b.samples = 5;
+  b.largest_input_step = 2, b.longest_hold_samples = 5, b.sample_time = 0.1;
+  b.largest_time_constant = 4.0;
+  const std::vector<FittedDomain> parts{a, b};
+  const auto merged = merged_domain(parts);
+  EXPECT_EQ(merged.input_min, -1.0);
+  EXPECT_EQ(merged.input_max, 9.0);
+  EXPECT_EQ(merged.output_min, -3.0);
+  EXPECT_EQ(merged.output_max, 2.0);
+  ASSERT_TRUE(merged.sample_time.has_value());
+  EXPECT_EQ(*merged.sample_time, 0.01);
+  EXPECT_NEAR(*merged.largest_input_rate(), 100.0, 1e-9);  // a's, the faster
+  EXPECT_NEAR(*merged.longest_hold(), 0.5, 1e-9);          // b's, the longer
+  EXPECT_NEAR(*merged.duration(), 0.1 + 0.5, 1e-9);
+  EXPECT_EQ(merged.largest_time_constant, 4.0);
+
+  // Without a sample time in one of them: per sample, no time.
+  b.sample_time.reset();
+  const std::vector<FittedDomain> untimed{a, b};
+  const auto per_sample = merged_domain(untimed);
+  EXPECT_FALSE(per_sample.sample_time.has_value());
+  EXPECT_EQ(per_sample.samples, 15u);
+  EXPECT_EQ(per_sample.largest_input_step, 2.0);
+  EXPECT_EQ(per_sample.longest_hold_samples, 10u);
+  EXPECT_HYST_ERROR(merged_domain(std::span<const FittedDomain>{}), "no fit record");
+}
+
+TEST(FittedDomain, ModelsWithTheSameExcursionsAreNamedTogether) {
+  FittedDomain domain;
+  domain.input_min = 0.0;
+  domain.input_max = 1.0;
+  const std::vector<double> record{0.5, 2.0, 0.5, 3.0};
+  const auto outside = check_inputs(domain, record);
+  const std::vector<std::pair<std::string, DomainCheck>> checks{
+      {"pi", outside}, {"kp", DomainCheck{}}, {"preisach", outside}};
+  const auto text = models_domain_message(checks, record.size());
+  EXPECT_EQ(text.rfind("pi, preisach: 2 of 4 samples: inputs above", 0), 0u) << text;
+  EXPECT_EQ(text.find("kp"), std::string::npos) << text;
+  EXPECT_EQ(models_domain_message(
+                std::vector<std::pair<std::string, DomainCheck>>{{"kp", DomainCheck{}}}, 4),
+            "");
+}
+
+TEST(FittedDomain, AFitOfSeveralRecordsRecordsTheirDomainAtEachSampleTime) {
+  // Two ramps with holds, one sampled at 10 ms (0..1 V) and one at 50 ms (-2..0.5 V).
+  std::vector<double> fast_input, fast_output, slow_input, slow_output;
+  for (int k = 0; k < 300; ++k) {
+    fast_input.push_back(std::min(1.0, 0.02 * k));
+    fast_output.push_back(0.8 * fast_input.back());
+  }
+  for (int k = 0; k < 120; ++k) {
+    slow_input.push_back(std::max(-2.0, -0.05 * k) + (k >= 100 ? 0.125 * (k - 99) : 0.0));
+    slow_output.push_back(0.8 * slow_input.back());
+  }
+  const std::vector<FitRecord> records{{fast_input, fast_output}, {slow_input, slow_output}};
+  const std::vector<double> sample_times{0.01, 0.05};
+  const auto& entry = ModelRegistry::builtin().find("pi_creep");
+  ASSERT_TRUE(entry.can_fit_records());
+  const auto outcome =
+      entry.fit_records(records, sample_times, {{"time_constants", {0.1, 1.0}}, {"operators", 4}});
+  ASSERT_TRUE(outcome.report.domain.has_value());
+  const auto& domain = *outcome.report.domain;
+  EXPECT_NEAR(domain.input_min, -2.0, 1e-12);
+  EXPECT_NEAR(domain.input_max, 1.0, 1e-12);
+  EXPECT_NEAR(domain.output_min, -1.6, 1e-12);
+  ASSERT_TRUE(domain.sample_time.has_value());
+  EXPECT_EQ(*domain.sample_time, 0.01);
+  EXPECT_NEAR(*domain.duration(), 300 * 0.01 + 120 * 0.05, 1e-9);
+  // Fastest: the slow record's rise by 0.125 per 50 ms = 2.5 per s (the fast one's 2 per s).
+  EXPECT_NEAR(*domain.largest_input_rate(), 2.5, 1e-9);
+  // Longest run without reversal: the fast record's, rising then held, 300 samples = 3 s; the
+  // slow one falls for 100 samples (5 s) before it turns.
+  EXPECT_NEAR(*domain.longest_hold(), 5.0, 1e-9);
+  EXPECT_EQ(domain.largest_time_constant, 1.0);
 }
 
 }  // namespace

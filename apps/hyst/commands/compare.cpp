@@ -49,8 +49,19 @@ struct CompareCommandOptions {
   std::string validation_start = "rest";
   std::string validation_align = "none";
   TimeOptions time;
+  std::string input_unit;   //!< --input-unit: in place of the file's
+  std::string output_unit;  //!< --output-unit
+  bool strict = false;
   ProgressFlags progress;
 };
+
+//! The warning (the error with --strict, after the tables are written) when held-out samples
+//! leave the domain their models were fitted on; `line` is the tables' own sentence about it.
+void report_held_out_domain(const std::string& line, bool strict) {
+  if (line.empty()) return;
+  if (strict) throw Error(line + " (--strict)");
+  warn(line);
+}
 
 //! The sample time of the records of `data` (--time, --sample-time, an aixACCT 'Time'
 //! column): the models with time in them are fitted at it. Fits need a uniform time axis.
@@ -166,6 +177,7 @@ void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions c
     any_fitted = any_fitted || row.ok;
   }
   if (!any_fitted) throw Error("no model could be fitted to the records (see the table)");
+  report_held_out_domain(held_out_domain_lines(comparison), options.strict);
 }
 
 //! Does `file` lie directly in `folder` (the same folder, also through links)?
@@ -233,12 +245,28 @@ void run(const CompareCommandOptions& options) {
                           (folder / "errors.png").string());
   }
   const auto html_title =
-      fmt::format("Model comparison: {} -> {} ({})", options.input, options.output, options.data);
-  const auto labelled = [&](const std::string& column) {
-    const auto unit = data.unit(column);
+      fmt::format("Model comparison: {} -> {} ({})", options.input, options.output,
+                  std::filesystem::path(options.data).filename().string());
+  const auto unit_of = [&](const std::string& column, const std::string& given) {
+    return given.empty() ? data.unit(column) : given;
+  };
+  const auto labelled = [&](const std::string& column, const std::string& unit) {
     return unit.empty() ? column : fmt::format("{} [{}]", column, unit);
   };
-  const plot::ComparisonPageLabels labels{labelled(options.input), labelled(options.output)};
+  const auto output_unit = unit_of(options.output, options.output_unit);
+  plot::ComparisonPageLabels labels{
+      labelled(options.input, unit_of(options.input, options.input_unit)),
+      labelled(options.output, output_unit),
+      output_unit,
+      {}};
+  // The figures over time in seconds when the record has a time axis.
+  if (const auto time = record_time(data, options.time, record.input.size())) {
+    labels.time = time->times;
+    if (labels.time.empty()) {
+      for (std::size_t k = 0; k < record.input.size(); ++k)
+        labels.time.push_back(static_cast<double>(k) * time->axis.sample_time);
+    }
+  }
   if (html_in_set) {
     plot::write_model_comparison_html(set.staged(names.back()), comparison, record.input,
                                       record.output, html_title, labels);
@@ -259,6 +287,7 @@ void run(const CompareCommandOptions& options) {
     if (!row.ok) warn(fmt::format("model '{}' was not fitted: {}", row.model, row.error));
   }
   if (!any_fitted) throw Error("no model could be fitted to the data (see the table)");
+  report_held_out_domain(held_out_domain_line(comparison), options.strict);
 }
 
 }  // namespace
@@ -324,6 +353,14 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--table", options->table,
                       "Measurement table N of an aixACCT export (see 'hyst data info FILE')");
   add_time_options(*command, options->time, "--data");
+  command->add_flag("--strict", options->strict,
+                    "Exit with status 1 when held-out samples leave the domain a model was "
+                    "fitted on (the tables are written; without it, a warning line)");
+  command->add_option("--input-unit", options->input_unit,
+                      "Unit of the input for the --html page's axes (default: the file's)");
+  command->add_option("--output-unit", options->output_unit,
+                      "Unit of the output for the --html page's axes and error columns "
+                      "(default: the file's)");
   command->add_flag("--no-plots", options->no_plots, "Write the tables only");
   add_progress_flags(*command, options->progress);
   command

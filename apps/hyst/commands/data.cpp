@@ -26,6 +26,7 @@ struct DataInfoOptions {
   std::optional<std::size_t> table;
   double band_fraction = 0.02;
   std::vector<std::string> loop;  //!< {input, output}: also the loop figures of every cycle
+  std::string time;               //!< --time COLUMN
   bool json = false;
 };
 
@@ -82,6 +83,7 @@ void run_info(const DataInfoOptions& options) {
   request.table = options.table;
   request.band_fraction = options.band_fraction;
   if (!options.loop.empty()) request.loop.emplace(options.loop[0], options.loop[1]);
+  request.time = options.time;
   const auto info = data::record_info(options.file, request);
 
   if (options.json) {
@@ -102,16 +104,30 @@ void run_info(const DataInfoOptions& options) {
       highlights += fmt::format("{}{} {}", highlights.empty() ? "; " : ", ", key, value);
     fmt::print("\n{}: {} columns{}{}\n", table.title, table.columns.size(),
                table.title == "variables" ? "" : fmt::format(", {} rows", table.rows), highlights);
-    fmt::print("  {:<22}{:<9}{:>8}{:>14}{:>14}{:>11}{:>8}\n", "column", "unit", "samples", "min",
-               "max", "reversals", "cycles");
+    if (const auto& t = table.time) {
+      fmt::print("  time axis: column '{}', {}, duration {:.6g} s\n", t->column,
+                 t->uniform ? fmt::format("uniform, sample time {:.6g} s", t->sample_time)
+                            : fmt::format("not uniform: median step {:.6g} s, steps {:.6g} .. "
+                                          "{:.6g} s",
+                                          t->sample_time, t->min_step, t->max_step),
+                 t->duration);
+    }
+    const std::string timing =
+        table.time ? fmt::format("{:>16}{:>17}", "max rate [/s]", "longest run [s]") : "";
+    fmt::print("  {:<22}{:<9}{:>8}{:>14}{:>14}{:>11}{:>8}{}\n", "column", "unit", "samples", "min",
+               "max", "reversals", "cycles", timing);
     for (const auto& column : table.columns) {
       if (!column.problem.empty()) {
         fmt::print("  {:<22}{}\n", column.name, one_line(column.problem));
         continue;
       }
-      fmt::print("  {:<22}{:<9}{:>8}{:>14.6g}{:>14.6g}{:>11}{:>8}\n", column.name, column.unit,
+      const std::string rates =
+          column.largest_rate
+              ? fmt::format("{:>16.6g}{:>17.6g}", *column.largest_rate, *column.longest_run)
+              : "";
+      fmt::print("  {:<22}{:<9}{:>8}{:>14.6g}{:>14.6g}{:>11}{:>8}{}\n", column.name, column.unit,
                  column.samples, column.min, column.max, count_text(column.reversals),
-                 count_text(column.cycles));
+                 count_text(column.cycles), rates);
     }
     for (const auto& m : table.loops) {
       fmt::print(
@@ -160,14 +176,22 @@ Run 'hyst data info --help' or 'hyst data extract --help' for their options.)");
                    "INPUT,OUTPUT: also the loop figures of every cycle (area, closure error, "
                    "coercive inputs at output 0, remanent outputs at input 0)")
       ->delimiter(',');
+  info_command->add_option("--time", info->time,
+                           "Time column [s] (default: an aixACCT table's 'Time'): each table's "
+                           "time axis, and each column's largest rate and longest run between "
+                           "reversals");
   info_command->add_flag("--json", info->json, "Print JSON instead of text");
   info_command->footer(R"(Example:
   hyst data info RMN_TRAP_SLOW.dat --table 6
   hyst data info RMN_TRAP_SLOW.dat --loop V+,P1     loop area, coercive and remanent values
   hyst data info conventional_example.forc         FORC curves, fields, calibration points
+  hyst data info record.csv --time t               sample time, rates, longest ramps and holds
 A MicroMag loop file's initial (virgin) curve is left out of the loop cycles.
 A column's reversals are its turning points that it leaves by more than the band; a cycle is
-one period: back to the first value, moving in the first direction.)");
+one period: back to the first value, moving in the first direction. With a time axis, a
+column's longest run is the longest time between its reversal points (or the record's ends):
+the longest ramp or hold a model fitted on it has seen; the time axis is uniform when every
+step is within 0.1 % of the median step.)");
   info_command->callback([info] { run_info(*info); });
 
   auto extract = std::make_shared<ExtractOptions>();

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "hyst/export/export_c.hpp"
 #include "hyst/export/export_fmu.hpp"
+#include "hyst/registry/fitted_domain_file.hpp"
 #include "hyst/registry/model_file.hpp"
 
 namespace hyst::cli {
@@ -87,6 +88,8 @@ void run(const ExportOptions& options) {
     }
     return;
   }
+  // The C code counts inputs beyond the domain the model was fitted on, when its file has one.
+  export_options.domain = load_fitted_domain(options.model);
   CCode code;
   try {
     // The file names depend on the prefix: known once the code is generated.
@@ -142,7 +145,10 @@ void add_export_command(CLI::App& app) {
       writes ctrl/piezo.h and ctrl/piezo.c: piezo_PARAMS, piezo_init/reset/step and, when the
       model has an inverse, piezo_inverse_init/reset/step. Supported models: pi, gpi,
       modified_pi, preisach, bouc_wen, pi_creep, modified_pi_creep. The code needs only
-      <math.h> (link with -lm).
+      <math.h> (link with -lm). When the model file has the domain it was fitted on
+      (info.domain, written by hyst fit), the code also has piezo_DOMAIN and
+      piezo_check_input (piezo_check_target with an inverse): each returns 1 for a sample
+      inside it (widened by 5 % of its width), else 0, and counts it in a piezo_domain_status.
   hyst export --model m.json --lang fmu --out fmus/ --prefix piezo --input-unit V \
       --output-unit um --with-inverse
       writes fmus/piezo.fmu and fmus/piezo_inverse.fmu (FMI 2.0 co-simulation, linux64 binary

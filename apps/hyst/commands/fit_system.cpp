@@ -18,6 +18,7 @@
 #include "hyst/dynamics/fit_hammerstein.hpp"
 #include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
+#include "hyst/dynamics/free_run_check.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/state_space_file.hpp"
@@ -47,8 +48,11 @@ struct FitSystemOptions {
   std::vector<std::string> given;  // the options of the models with hysteresis given
 };
 
+//! The free-run score of the fitted model on every training experiment (periodic steady state),
+//! with a warning line (and "warnings" in the file) for an unstable linear block or samples that
+//! ran away: a fit is not trusted until its free run has been seen.
 nlohmann::json scores_json(const std::vector<PeriodicExperiment>& experiments,
-                           const DynamicDataOptions& data,
+                           const DynamicDataOptions& data, const StateSpace& linear,
                            const std::function<SimulationScore(const PeriodicExperiment&)>& score) {
   nlohmann::json scores = nlohmann::json::array();
   for (std::size_t i = 0; i < experiments.size(); ++i) {
@@ -58,9 +62,13 @@ nlohmann::json scores_json(const std::vector<PeriodicExperiment>& experiments,
       const auto result = score(experiments[i]);
       fmt::print("experiment {} (periodic steady state): relative error {:.3f} % (RMSE {:.6g})\n",
                  i + 1, 100.0 * result.mean_relative_error, result.mean_rmse);
+      const auto warnings = free_run_warnings(linear, result.runaway);
+      for (const auto& warning : warnings)
+        warn(fmt::format("experiment {}: unstable in free run: {}", i + 1, warning));
       scores.push_back({{"experiment", experiment},
                         {"mean_relative_error", result.mean_relative_error},
-                        {"mean_rmse", result.mean_rmse}});
+                        {"mean_rmse", result.mean_rmse},
+                        {"warnings", warnings}});
     } catch (const Error& error) {
       fmt::print("experiment {} (periodic steady state): not scored: {}\n", i + 1, error.what());
       scores.push_back({{"experiment", experiment}, {"error", error.what()}});
@@ -102,9 +110,10 @@ void fit_hysteretic(const FitSystemOptions& options,
   fmt::print("{}\n", fit.report.brief());
   const auto model = any_hysteretic_lfr(fit.model);
   const ScoreOptions periodic{.periodic = true};
-  auto scores = scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
-    return score_hysteretic_lfr(model, x.input, x.output, periodic);
-  });
+  auto scores =
+      scores_json(experiments, options.data, model.linear(), [&](const PeriodicExperiment& x) {
+        return score_hysteretic_lfr(model, x.input, x.output, periodic);
+      });
   auto info = fit_info(fit.report, std::move(scores));
   info["fit"]["structure"] = options.model;
   save_hysteretic_lfr(options.out, model, info);
@@ -194,7 +203,8 @@ void run(const FitSystemOptions& options) {
 
   if (options.model != "state_space") return fit_with_hysteresis(options, experiments, fit.model);
   auto info =
-      fit_info(fit.report, scores_json(experiments, options.data, [&](const PeriodicExperiment& x) {
+      fit_info(fit.report,
+               scores_json(experiments, options.data, fit.model, [&](const PeriodicExperiment& x) {
                  return score_state_space(fit.model, x.input, x.output, {.periodic = true});
                }));
   info["fit"]["lines"] = bla.lines.size();

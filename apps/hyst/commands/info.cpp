@@ -2,6 +2,7 @@
 // inverse, and the fit report that produced it.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -22,6 +23,13 @@ struct InfoOptions {
   bool json = false;
 };
 
+//! The parameters of a state-space model as its fit counts them: A by its order (its
+//! eigenvalues), the entries of B, C and D.
+std::size_t state_space_parameters(const StateSpace& model) {
+  const auto& p = model.params();
+  return std::size_t(p.a.rows() + p.b.size() + p.c.size() + p.d.size());
+}
+
 //! A linear state-space model file (hyst/registry/state_space_file.hpp): sizes, poles, stability.
 void show_state_space(const InfoOptions& options, const nlohmann::json& document) {
   const auto file = state_space_from_json(document, options.file);
@@ -33,6 +41,7 @@ void show_state_space(const InfoOptions& options, const nlohmann::json& document
                           {"order", model.order()},
                           {"inputs", model.inputs()},
                           {"outputs", model.outputs()},
+                          {"parameters", state_space_parameters(model)},
                           {"sample_time", model.sample_time()},
                           {"spectral_radius", model.spectral_radius()},
                           {"stable", model.is_stable()}};
@@ -44,6 +53,10 @@ void show_state_space(const InfoOptions& options, const nlohmann::json& document
   fmt::print("model:       state_space (linear, discrete time)\n");
   fmt::print("size:        {} states, {} inputs, {} outputs\n", model.order(), model.inputs(),
              model.outputs());
+  fmt::print(
+      "parameters:  {} (A by its {} eigenvalues, a change of state coordinates changes its "
+      "entries, not the model; B, C and D)\n",
+      state_space_parameters(model), model.order());
   fmt::print("sample time: {:g} s\n", model.sample_time());
   fmt::print("poles:       largest magnitude {:.6g} ({})\n", model.spectral_radius(),
              model.is_stable() ? "stable" : "not stable");
@@ -56,6 +69,13 @@ void show_hysteretic_lfr(const InfoOptions& options, const nlohmann::json& docum
   const auto file = hysteretic_lfr_from_json(document, options.file);
   const auto& model = file.model;
   const auto& linear = model.linear();
+  // What the fit counted (info.fit.parameters): the parameters it did not hold fixed.
+  std::optional<std::size_t> fitted;
+  if (const auto fit = file.info.find("fit"); fit != file.info.end() && fit->is_object()) {
+    if (const auto count = fit->find("parameters");
+        count != fit->end() && count->is_number_unsigned())
+      fitted = count->get<std::size_t>();
+  }
   if (options.json) {
     nlohmann::json out = {{"file", options.file},
                           {"model", "hysteretic_lfr"},
@@ -65,16 +85,25 @@ void show_hysteretic_lfr(const InfoOptions& options, const nlohmann::json& docum
                           {"feedback_model", model.feedback_model()},
                           {"feedback_channels", model.feedback_channels()},
                           {"parameters", model.parameter_count()},
+                          {"feedback_parameters", model.feedback_parameter_count()},
                           {"sample_time", model.sample_time()},
                           {"linear_spectral_radius", linear.spectral_radius()}};
+    if (fitted) out["fitted_parameters"] = *fitted;
     if (!file.info.empty()) out["info"] = file.info;
     fmt::print("{}\n", out.dump(2));
     return;
   }
   fmt::print("file:        {}\n", options.file);
   fmt::print("model:       hysteretic_lfr (linear block with hysteresis in feedback)\n");
-  fmt::print("size:        {} states, {} inputs, {} outputs, {} parameters\n", model.order(),
-             model.inputs(), model.outputs(), model.parameter_count());
+  fmt::print("size:        {} states, {} inputs, {} outputs\n", model.order(), model.inputs(),
+             model.outputs());
+  fmt::print(
+      "parameters:  {} (A by its {} eigenvalues, a change of state coordinates changes its "
+      "entries, not the model; B, C and D without the zero Dzw block; the channels' {})\n",
+      model.parameter_count(), model.order(), model.feedback_parameter_count());
+  if (fitted) {
+    fmt::print("fitted:      {} (info.fit.parameters: the fit held the others fixed)\n", *fitted);
+  }
   fmt::print("feedback:    {} '{}' channels\n", model.feedback_channels(), model.feedback_model());
   fmt::print("sample time: {:g} s\n", model.sample_time());
   fmt::print("linear poles: largest magnitude {:.6g} (without the feedback)\n",

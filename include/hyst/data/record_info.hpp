@@ -26,6 +26,19 @@ struct RecordInfoOptions {
   double band_fraction = 0.02;       //!< hysteresis band as a fraction of each column's range
   //! {input, output} columns (by name or "name [unit]" header): also the figures of each cycle.
   std::optional<std::pair<std::string, std::string>> loop;
+  //! The time column [s] (by name or "name [unit]" header) of every table that has it; "": an
+  //! aixACCT table's 'Time' column where there is one. With it, each table shows its time axis
+  //! and each column its largest rate and its longest run between reversals.
+  std::string time;
+};
+
+//! A table's time axis (sample_time.hpp's rules of uniformity).
+struct TimeAxisInfo {
+  std::string column;
+  bool uniform = true;
+  double sample_time = 0.0;  //!< the uniform step, or the median step of a non-uniform axis [s]
+  double min_step = 0.0, max_step = 0.0;  //!< [s]
+  double duration = 0.0;                  //!< last minus first time [s]
 };
 
 struct ColumnInfo {
@@ -36,6 +49,10 @@ struct ColumnInfo {
   double min = 0.0, max = 0.0;  //!< 0 without samples
   //! Counts with the band; none for constant columns and columns of fewer than 2 samples.
   std::optional<std::size_t> reversals, cycles;
+  //! With a time axis (not for the time column itself): the largest |x[k] - x[k-1]| / step
+  //! [unit / s], and the longest time between neighbouring reversal points (or the record's ends)
+  //! with the band [s]: the longest ramp or hold a model fitted on this column has seen.
+  std::optional<double> largest_rate, longest_run;
 };
 
 struct TableInfo {
@@ -43,8 +60,9 @@ struct TableInfo {
   //! Metadata worth a glance (aixACCT: sample, waveform, frequency, amplitude), in file order.
   std::vector<std::pair<std::string, std::string>> metadata;
   std::vector<ColumnInfo> columns;
-  std::size_t rows = 0;            //!< samples of the first column
-  std::vector<LoopMetrics> loops;  //!< one per cycle of the loop columns, when asked and present
+  std::size_t rows = 0;              //!< samples of the first column
+  std::vector<LoopMetrics> loops;    //!< one per cycle of the loop columns, when asked and present
+  std::optional<TimeAxisInfo> time;  //!< when the table has the time column
 };
 
 //! The curves of a MicroMag FORC file (io/micromag_forc.hpp), as measured (no drift correction).
@@ -75,11 +93,14 @@ struct RecordInfo {
 
 //! Reads the file (io::DataFile's rules for its kind) and describes it. Throws hyst::Error for an
 //! unreadable file, a band_fraction outside (0, 1), a table that does not exist or a table asked
-//! of a file other than an aixACCT export.
+//! of a file other than an aixACCT export, a time column that no table has, and a time column
+//! that is not finite and strictly increasing (naming the table, column and sample).
 RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOptions& options);
 
 //! {"file", "format", "band_fraction", "tables": [{"table", "metadata"?, "columns": [{"name",
-//! "unit", "samples", "problem"? | "min", "max", "reversals", "cycles"}], "loops"?: [{"first",
+//! "unit", "samples", "problem"? | "min", "max", "reversals", "cycles", "largest_rate"?,
+//! "longest_run"?}], "time"?: {"column", "uniform", "sample_time", "min_step", "max_step",
+//! "duration"}, "loops"?: [{"first",
 //! "last", "area", "closure_error", "input_mismatch", "coercive_inputs", "remanent_outputs"}]}]}
 //! where counts are null when not defined and crossings are {"value", "index", "direction"};
 //! for a FORC file "tables" is empty and "forc" holds ForcInfo by its member names.

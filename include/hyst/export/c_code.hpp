@@ -3,9 +3,11 @@
 //! The options and the result of the C export (export_c.hpp). A registry entry whose model can be
 //! exported provides its code with these types (ModelEntry::c_code).
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/registry/dynamic_model.hpp"
 
 namespace hyst {
@@ -22,6 +24,10 @@ struct CExportOptions {
   InverseLimits limits{};
   //! The file the model came from, named in the generated comments (may be empty).
   std::string source;
+  //! The domain the model was fitted on (a model file's info.domain): with it, the code also
+  //! declares <prefix>_DOMAIN and <prefix>_check_input (and _check_target with an inverse), which
+  //! count the samples beyond it as the library's checks do (fitted_domain.hpp).
+  std::optional<FittedDomain> domain;
 };
 
 //! The unit of an exported parameter, in terms of the model's input and output units (an FMU names

@@ -36,6 +36,7 @@
 #include "hyst/core/progress.hpp"
 #include "hyst/identify/data_split.hpp"
 #include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/identify/record_diagnosis.hpp"
 #include "hyst/identify/reference_predictors.hpp"
 #include "hyst/registry/model_registry.hpp"
@@ -75,6 +76,9 @@ struct ComparedModel {
   double fit_seconds = 0.0;
   double ns_per_sample = 0.0;
   std::vector<double> simulated;  //!< free run over the whole record (fit and validation part)
+  //! The held-out inputs against the domain of the fit part (report->domain): where the ranking
+  //! scores extrapolation.
+  DomainCheck held_out_domain;
 };
 
 struct ModelComparison {
@@ -111,8 +115,12 @@ std::string yardstick_line(const ModelComparison& comparison);
 //! is 373 % (pi), above 20 %. Seen: butterfly: ..."; empty when comparison.no_fit is not set.
 std::string no_fit_line(const ModelComparison& comparison);
 
+//! "The held-out part leaves the domain the models were fitted on: pi, kp: 120 of 400 samples:
+//! inputs above ..."; empty when it stays inside every fitted model's domain.
+std::string held_out_domain_line(const ModelComparison& comparison);
+
 //! The ranking as a Markdown table (one row per model; failed rows carry the reason), after the
-//! yardstick line and the no-fit verdict.
+//! yardstick line, the no-fit verdict and the held-out domain line.
 std::string model_comparison_markdown(const ModelComparison& comparison);
 //! The ranking as CSV: rank,model,status,validation_nrmse_percent,validation_rmse,
 //! validation_max_error,beats_yardstick,parameters,fit_seconds,simulation_ns_per_sample,message

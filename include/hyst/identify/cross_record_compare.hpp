@@ -39,6 +39,7 @@
 
 #include "hyst/core/progress.hpp"
 #include "hyst/identify/fit_report.hpp"
+#include "hyst/identify/fitted_domain.hpp"
 #include "hyst/identify/record_diagnosis.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/validation_rule.hpp"
@@ -75,6 +76,8 @@ struct HeldOutScore {
   std::string record;
   std::vector<std::string> fitted_on;
   ErrorMetrics metrics;
+  //! The held-out record's inputs against the domain of the records the model was fitted on.
+  DomainCheck domain;
 };
 
 //! One row of the cross-record comparison.
@@ -144,6 +147,11 @@ const CrossRecordReference* best_cross_record_reference(const CrossRecordCompari
 //! verdicts, the yardstick line, then one row per model with its mean, worst and per-record
 //! held-out NRMSE [%] and one row per reference predictor.
 std::string cross_record_markdown(const CrossRecordComparison& comparison);
+
+//! One paragraph per held-out record that leaves the domain of any model fitted on the others
+//! ("Held-out record 'v2:y2' leaves the domain ...: pi, kp: 120 of 400 samples: ..."), each
+//! followed by a blank line; empty when every record stays inside.
+std::string held_out_domain_lines(const CrossRecordComparison& comparison);
 //! The ranking as CSV: rank,model,status,mean_nrmse_percent,worst_nrmse_percent,worst_record,
 //! parameters,fit_seconds,beats_yardstick, one column "nrmse_percent:RECORD" per held-out record,
 //! message; then one row per reference predictor with rank "reference" and model

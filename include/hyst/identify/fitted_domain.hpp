@@ -18,6 +18,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hyst {
@@ -92,5 +93,19 @@ DomainCheck check_record_inputs(const FittedDomain& domain, std::span<const doub
 
 //! The targets of an inverse that lie beyond every output the fit measured.
 DomainCheck check_targets(const FittedDomain& domain, std::span<const double> targets);
+
+//! The checks of several models on one record of `record_samples` samples as one text, the
+//! models whose records leave their domains alike named together: "pi, kp: 12 of 401 samples:
+//! inputs above ...; pi_creep: ..."; empty when every check is inside.
+std::string models_domain_message(
+    std::span<const std::pair<std::string, DomainCheck>> checks_by_model,
+    std::size_t record_samples);
+
+//! The domain of several fit records together, from the domain of each: the union of their
+//! ranges, the largest rate and the longest hold of any of them, and their samples summed. When
+//! every part has a sample time, the result is expressed at the smallest of them (steps, holds
+//! and samples converted, so that its rate, longest hold and duration in seconds are those of the
+//! parts); when any lacks one, it has none and counts per sample. hyst::Error without parts.
+FittedDomain merged_domain(std::span<const FittedDomain> parts);
 
 }  // namespace hyst

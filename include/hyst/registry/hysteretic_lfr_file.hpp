@@ -66,8 +66,14 @@ class AnyHystereticLfr {
   const nlohmann::json& feedback_documents() const { return feedback_; }
   //! The registry name of the feedback models ("pi").
   const std::string& feedback_model() const { return feedback_name_; }
-  //! Entries of the linear block (all but the zero Dzw) plus every feedback model's parameters.
+  //! The parameters of the model: the linear block's A by its order n (a change of state
+  //! coordinates changes A's entries, not the model: its n eigenvalues count), the entries of B,
+  //! C and D but the zero Dzw block, and every feedback model's parameters. A fit may hold some
+  //! of them fixed (fit_hysteretic_lfr() fixes each PI channel's r = 0 weight and offset, which
+  //! the linear block carries): its report counts the ones it fitted.
   std::size_t parameter_count() const { return parameter_count_; }
+  //! The feedback models' part of parameter_count().
+  std::size_t feedback_parameter_count() const { return feedback_parameter_count_; }
 
   //! y (N x p) for u (N x m) from rest, or (periodic_start) from the periodic steady state of
   //! `one_period` (N' x m), which `input` then continues. Errors as HystereticLfr's.
@@ -82,6 +88,7 @@ class AnyHystereticLfr {
   nlohmann::json feedback_;
   std::string feedback_name_;
   std::size_t parameter_count_ = 0;
+  std::size_t feedback_parameter_count_ = 0;
 };
 
 //! A hysteretic LFR with PI models (e.g. fit_hysteretic_lfr()'s) in the run-time form.
