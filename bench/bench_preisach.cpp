@@ -7,11 +7,13 @@
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
 
 #include "hyst/core/invert.hpp"
 #include "hyst/inverse/inverse_preisach.hpp"
 #include "hyst/models/preisach.hpp"
 #include "hyst/models/preisach_relay_grid.hpp"
+#include "hyst/registry/model_registry.hpp"
 #include "hyst/signals/generators.hpp"
 
 namespace {
@@ -113,9 +115,35 @@ void BM_InverseGaussianPreisach(benchmark::State& bench) {
 
 }  // namespace
 
+// One run of a registry model from its start state, as Python's Model.simulate makes it: on a
+// copy of the whole model (arg 0: clone(), then simulate) or on a copy of its state alone (arg 1:
+// simulate_from_state()), for a grid of 1001 levels (501 501 relay weights).
+void BM_RegistryPreisachRunFromStart(benchmark::State& bench) {
+  const auto params = grid_params(1001);
+  const auto model = hyst::ModelRegistry::builtin()
+                         .find("preisach")
+                         .create(nlohmann::json{{"levels", params.everett.levels},
+                                                {"lower", -1.0},
+                                                {"upper", 1.0},
+                                                {"weights", params.everett.weights}},
+                                 nullptr);
+  const auto input = make_input();
+  std::vector<double> output(input.size());
+  for (auto _ : bench) {
+    if (bench.range(0) == 0) {
+      model->clone()->simulate(input, output);
+    } else {
+      model->simulate_from_state(input, output);
+    }
+    benchmark::DoNotOptimize(output.data());
+  }
+  bench.SetItemsProcessed(static_cast<std::int64_t>(bench.iterations() * input.size()));
+}
+
 BENCHMARK(BM_PreisachBruteForce)->Arg(21)->Arg(101)->Arg(1001);
 BENCHMARK(BM_PreisachFast)->Arg(21)->Arg(101)->Arg(1001);
 BENCHMARK(BM_GaussianPreisach);
 BENCHMARK(BM_TabulatedPreisach)->Arg(40)->Arg(200);
 BENCHMARK(BM_InversePreisach)->Arg(21)->Arg(101)->Arg(1001);
 BENCHMARK(BM_InverseGaussianPreisach);
+BENCHMARK(BM_RegistryPreisachRunFromStart)->Arg(0)->Arg(1);

@@ -129,18 +129,12 @@ class ModelAdapter final : public DynamicModel {
   void reset() override { state_ = model_.initial_state(); }
   void simulate(std::span<const double> input, std::span<double> output) override {
     hyst::simulate(model_, state_, input, output);
-    // A recursion that runs away reaches infinity later: its first sample beyond the bound is
-    // the one to name.
-    if constexpr (requires { Codec::runaway_limit(model_); }) throw_if_runaway(input, output);
-    // Finite inputs can still overflow (e.g. 1e308 times a weight above 1): report, never pass
-    // on infinities as results. One pass over the batch, outside the sample loop.
-    for (std::size_t k = 0; k < output.size(); ++k) {
-      if (!std::isfinite(output[k])) {
-        throw Error(fmt::format("input[{}] = {} gives the output {}: it overflows the model", k,
-                                input[k], output[k]),
-                    "input");
-      }
-    }
+    check_outputs(input, output);
+  }
+  void simulate_from_state(std::span<const double> input, std::span<double> output) const override {
+    State state = state_;
+    hyst::simulate(model_, state, input, output);
+    check_outputs(input, output);
   }
   TimeDependence time_dependence() const override {
     if constexpr (requires { Codec::time_dependence; }) {
@@ -178,6 +172,21 @@ class ModelAdapter final : public DynamicModel {
   const State& model_state() const { return state_; }
 
  private:
+  void check_outputs(std::span<const double> input, std::span<const double> output) const {
+    // A recursion that runs away reaches infinity later: its first sample beyond the bound is
+    // the one to name.
+    if constexpr (requires { Codec::runaway_limit(model_); }) throw_if_runaway(input, output);
+    // Finite inputs can still overflow (e.g. 1e308 times a weight above 1): report, never pass
+    // on infinities as results. One pass over the batch, outside the sample loop.
+    for (std::size_t k = 0; k < output.size(); ++k) {
+      if (!std::isfinite(output[k])) {
+        throw Error(fmt::format("input[{}] = {} gives the output {}: it overflows the model", k,
+                                input[k], output[k]),
+                    "input");
+      }
+    }
+  }
+
   // A recursion that diverges on finite input (an unstable feedback of the model's own outputs)
   // is an error at the first sample beyond the model's stated bound, not a result.
   void throw_if_runaway(std::span<const double> input, std::span<const double> output) const {

@@ -66,6 +66,11 @@ class DynamicModel {
   //! Runs the model over `input` from the current state (advanced); hyst::Error for mismatched
   //! lengths, non-finite input samples or outputs that overflow (not finite).
   virtual void simulate(std::span<const double> input, std::span<double> output) = 0;
+  //! The same run on a copy of the state alone, the model unchanged: no copy of the parameters
+  //! (a Preisach model's relay weights, a NARX network), so a caller that wants every run to
+  //! start afresh pays only for the state.
+  virtual void simulate_from_state(std::span<const double> input,
+                                   std::span<double> output) const = 0;
 
   //! How the output depends on time; TimeDependence::none unless the model has a sample time.
   virtual TimeDependence time_dependence() const = 0;
