@@ -4,11 +4,13 @@
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
 
 #include "hyst/core/invert.hpp"
 #include "hyst/core/simulate.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
+#include "hyst/registry/model_registry.hpp"
 #include "hyst/signals/generators.hpp"
 
 namespace {
@@ -67,8 +69,28 @@ void BM_InversePiInvert(benchmark::State& bench) {
   bench.SetItemsProcessed(static_cast<std::int64_t>(bench.iterations() * targets.size()));
 }
 
+// The registry's inverse (the path of `hyst invert` and Python's Inverse.invert) on the same
+// targets: the step inverse below kPiBatchInverseMinOperators plays, the O(log m) batch inverse
+// from there on.
+void BM_RegistryPiInvert(benchmark::State& bench) {
+  const auto model = make_model(static_cast<std::size_t>(bench.range(0)));
+  const auto dynamic = hyst::ModelRegistry::builtin().find("pi").create(
+      nlohmann::json{{"thresholds", model.params().thresholds},
+                     {"weights", model.params().weights}},
+      nullptr);
+  auto inverse = dynamic->inverse({});
+  const auto targets = make_input();
+  std::vector<double> inputs(targets.size());
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(inverse->invert(targets, inputs));
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(static_cast<std::int64_t>(bench.iterations() * targets.size()));
+}
+
 }  // namespace
 
 BENCHMARK(BM_PiStep)->Arg(8)->Arg(16)->Arg(64);
 BENCHMARK(BM_PiSimulate)->Arg(8)->Arg(16)->Arg(64);
-BENCHMARK(BM_InversePiInvert)->Arg(8)->Arg(16)->Arg(64);
+BENCHMARK(BM_InversePiInvert)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Arg(256)->Arg(1024);
+BENCHMARK(BM_RegistryPiInvert)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Arg(256)->Arg(1024);

@@ -4,6 +4,7 @@
 
 #include "actuator_force_capability.hpp"
 #include "c_code_capability.hpp"
+#include "hyst/core/invert.hpp"
 #include "hyst/identify/fit_prandtl_ishlinskii.hpp"
 #include "hyst/inverse/inverse_prandtl_ishlinskii.hpp"
 #include "hyst/models/prandtl_ishlinskii.hpp"
@@ -15,13 +16,21 @@
 namespace hyst::detail {
 namespace {
 
-// The inverse PI of `hyst invert` and Python: batches in O(log m) per sample
-// (pi_batch_inverse.hpp).
+// Plays from which the batch inverse (O(log m) per sample, with a stack of segments) is faster
+// than the library's step inverse (O(m), one min and max per play): 9.3 against 15.5 ns per
+// sample at 16 plays, 15.8 against 18.0 at 32, 34 against 21 at 64 (bench_prandtl_ishlinskii,
+// BM_InversePiInvert and BM_RegistryPiInvert, docs/performance.md).
+constexpr std::size_t kPiBatchInverseMinOperators = 40;
+
+// The inverse PI of `hyst invert` and Python: the step inverse for few plays, batches in
+// O(log m) per sample (pi_batch_inverse.hpp) for many.
 class PiInverseAdapter final : public DynamicInverse {
  public:
   PiInverseAdapter(InversePrandtlIshlinskii inverse, PrandtlIshlinskii::State state)
       : inverse_(std::move(inverse)), state_(std::move(state)) {}
   InverseReport invert(std::span<const double> targets, std::span<double> inputs) override {
+    if (inverse_.forward().size() < kPiBatchInverseMinOperators)
+      return hyst::invert(inverse_, state_, targets, inputs);
     return invert_pi_batch(inverse_, state_, targets, inputs, workspace_);
   }
   nlohmann::json state() const override { return play_state_to_json(state_); }

@@ -294,7 +294,8 @@ TEST(InversePrandtlIshlinskii, RejectsModelsWithoutInverse) {
 }
 
 // The registry's inverse (`hyst invert`, Python) runs batches by segments and binary search
-// (src/registry/pi_batch_inverse.hpp); it must agree with solve() sample by sample: same inputs and
+// (src/registry/pi_batch_inverse.hpp) from 40 plays on (the step inverse below, which is faster
+// there; most trials below have more); it must agree with solve() sample by sample: same inputs and
 // statuses up to rounding, same final state. Random models, a history before the inversion (a
 // non-trivial start state), a random walk with reversals at every scale, input limits.
 TEST(InversePrandtlIshlinskii, RegistryBatchInverseAgreesWithSolve) {
