@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "hyst/core/error.hpp"
+#include "hyst/dynamics/initial_state_estimate.hpp"
 
 namespace hyst {
 
@@ -95,12 +96,28 @@ SimulationScore score_state_space(const StateSpace& model, const PeriodicSignals
   if (input.channels != model.inputs() || output.channels != model.outputs())
     throw Error(fmt::format("score: the model has {} inputs and {} outputs, the data {} and {}",
                             model.inputs(), model.outputs(), input.channels, output.channels));
+  const std::size_t transient = scored_transient(options);
+  std::size_t realisation = 0;
   const auto simulate = [&](const Eigen::MatrixXd& u, const Eigen::MatrixXd& one_period) {
+    if (options.init_samples > 0) {
+      const auto measured = realisation_record(output, realisation++);
+      auto state =
+          model.make_state(estimate_initial_state(model, u, measured, options.init_samples).state);
+      return model.simulate(u, state);
+    }
     auto state = options.periodic ? model.make_state(model.periodic_state(one_period))
                                   : model.initial_state();
     return model.simulate(u, state);
   };
-  return score_simulation(input, output, simulate, options.transient_samples);
+  return score_simulation(input, output, simulate, transient);
+}
+
+std::size_t scored_transient(const ScoreOptions& options) {
+  if (options.init_samples == 0) return options.transient_samples;
+  if (options.periodic)
+    throw Error("score: init_samples and periodic are two ways to start a realisation: choose one",
+                "init_samples");
+  return options.init_samples;
 }
 
 }  // namespace hyst

@@ -149,6 +149,36 @@ Eigen::MatrixXd AnyHystereticLfr::simulate_from_periodic_state(
       model_);
 }
 
+Eigen::MatrixXd AnyHystereticLfr::simulate_from_state(const Eigen::MatrixXd& input,
+                                                      const Eigen::VectorXd& x0) const {
+  return std::visit(
+      [&](const auto& m) {
+        auto state = m.make_state(x0);
+        return m.simulate(input, state);
+      },
+      model_);
+}
+
+InitialStateEstimate AnyHystereticLfr::estimate_initial_state(const Eigen::MatrixXd& input,
+                                                              const Eigen::MatrixXd& output,
+                                                              std::size_t samples) const {
+  // The linear block's estimate with the hysteresis path open (its inputs w at 0), then the
+  // whole model's residual by Gauss-Newton.
+  const auto n = Eigen::Index(samples);
+  const auto& lin = linear();
+  const auto m = Eigen::Index(inputs());
+  const auto p = Eigen::Index(outputs());
+  const StateSpace to_y(StateSpace::Params{lin.params().a, lin.params().b.leftCols(m),
+                                           lin.params().c.topRows(p),
+                                           lin.params().d.topLeftCorner(p, m), lin.sample_time()});
+  const auto start = hyst::estimate_initial_state(to_y, input, output, samples);
+  return refine_initial_state(
+      [&](const Eigen::VectorXd& x0) {
+        return Eigen::MatrixXd(simulate_from_state(input.topRows(n), x0));
+      },
+      output.topRows(n), start.state);
+}
+
 AnyHystereticLfr any_hysteretic_lfr(const HystereticLfr<PrandtlIshlinskii>& model) {
   const auto& entry = ModelRegistry::builtin().find("pi");
   std::vector<std::unique_ptr<DynamicModel>> owned;
@@ -164,6 +194,18 @@ AnyHystereticLfr any_hysteretic_lfr(const HystereticLfr<PrandtlIshlinskii>& mode
 
 SimulationScore score_hysteretic_lfr(const AnyHystereticLfr& model, const PeriodicSignals& input,
                                      const PeriodicSignals& output, const ScoreOptions& options) {
+  if (options.init_samples > 0) {
+    const std::size_t transient = scored_transient(options);
+    std::size_t realisation = 0;
+    return score_simulation(
+        input, output,
+        [&](const Eigen::MatrixXd& u, const Eigen::MatrixXd&) {
+          const auto measured = realisation_record(output, realisation++);
+          return model.simulate_from_state(
+              u, model.estimate_initial_state(u, measured, options.init_samples).state);
+        },
+        transient);
+  }
   if (options.periodic)
     return score_simulation(
         input, output,

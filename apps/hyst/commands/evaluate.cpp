@@ -29,6 +29,7 @@ struct EvaluateOptions {
   DynamicDataOptions data;
   bool periodic = false;
   std::size_t transient = 0;
+  std::size_t init_samples = 0;  //!< --init-samples N: the state from the first N outputs
   bool json = false;
   bool strict = false;
   // Single-input models only:
@@ -71,6 +72,7 @@ void run_single_input(const EvaluateOptions& options) {
           ", from its periodic steady state with "
           "--validation-start periodic");
   refused(options.transient != 0, "--transient", "");
+  refused(options.init_samples != 0, "--init-samples", "");
   if (options.data.data.size() != 1 || options.data.input_columns.empty() ||
       options.data.output_columns.empty())
     throw Error(
@@ -162,7 +164,7 @@ void run(const EvaluateOptions& options) {
   const auto& experiment = experiments.at(0);
   const auto result = [&] {
     try {
-      return score(model, experiment, {options.periodic, options.transient});
+      return score(model, experiment, {options.periodic, options.transient, options.init_samples});
     } catch (const Error& error) {
       throw Error(fmt::format("{} on {}: {}", options.model,
                               describe_experiment(options.data, 0, experiment), error.what()));
@@ -178,16 +180,23 @@ void run(const EvaluateOptions& options) {
     out["warnings"] = warnings;
     out["model"] = options.model;
     out["periodic"] = options.periodic;
-    out["transient_samples"] = options.transient;
+    out["transient_samples"] =
+        scored_transient({options.periodic, options.transient, options.init_samples});
+    out["init_samples"] = options.init_samples;
     fmt::print("{}\n", out.dump(2));
     return;
   }
   fmt::print("model: {} ({})\n", options.model, describe(model));
   fmt::print("data:  {}\n", describe_experiment(options.data, 0, experiment));
-  fmt::print("start: {}\n\n",
-             options.periodic ? "periodic steady state"
-                              : fmt::format("rest, first {} samples of each realisation left out",
-                                            options.transient));
+  const std::string start =
+      options.periodic ? std::string("periodic steady state")
+      : options.init_samples > 0
+          ? fmt::format(
+                "the state estimated from the input and the first {} measured outputs of "
+                "each realisation, which are left out",
+                options.init_samples)
+          : fmt::format("rest, first {} samples of each realisation left out", options.transient);
+  fmt::print("start: {}\n\n", start);
   fmt::print("{:<8} {:>14} {:>15}\n", "output", "RMSE", "relative error");
   for (std::size_t c = 0; c < result.channels.size(); ++c)
     fmt::print("{:<8} {:>14.6g} {:>14.3f} %\n", c + 1, result.channels[c].rmse,
@@ -214,6 +223,13 @@ void add_evaluate_command(CLI::App& app) {
                    "Without --periodic: samples left out at the start of each realisation")
       ->capture_default_str()
       ->excludes(periodic);
+  command
+      ->add_option("--init-samples", options->init_samples,
+                   "Dynamic models: start each realisation from the state estimated from its "
+                   "input and its first N measured outputs (the benchmarks' n_init rule), and "
+                   "score the rest")
+      ->excludes(periodic)
+      ->excludes("--transient");
   command->add_option("--table", options->table,
                       "Single-input models: the table of a multi-table data file (1-based)");
   command

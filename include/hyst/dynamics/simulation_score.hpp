@@ -41,15 +41,25 @@ struct SimulationScore {
 struct ScoreOptions {
   bool periodic = false;              //!< start each realisation in periodic steady state
   std::size_t transient_samples = 0;  //!< left out at the start of each realisation
+  //! The benchmark's submission rule: each realisation starts from the state estimated from its
+  //! input and its first init_samples measured outputs (initial_state_estimate.hpp), which are
+  //! then left out of the score (transient_samples is taken as init_samples). 0: not used.
+  std::size_t init_samples = 0;
 };
+
+//! The transient a score leaves out: init_samples when given, else transient_samples. Throws
+//! hyst::Error for init_samples with periodic (two ways to start).
+std::size_t scored_transient(const ScoreOptions& options);
 
 //! Simulates one realisation: input (periods * N x m) to output (periods * N x p); `one_period`
 //! (N x m, the first period) is what a periodic simulation computes its initial state from.
 using RealisationSimulator =
     std::function<Eigen::MatrixXd(const Eigen::MatrixXd& input, const Eigen::MatrixXd& one_period)>;
 
-//! Scores any simulator. Throws hyst::Error for mismatched sizes, a transient that leaves no
-//! sample of a period, a constant output channel (std 0) or a non-finite simulated sample.
+//! Scores any simulator. The realisations are simulated in order (a simulator that needs the
+//! measured output of its realisation, ScoreOptions::init_samples, counts them). Throws hyst::Error
+//! for mismatched sizes, a transient that leaves no sample of a period, a constant output channel
+//! (std 0) or a non-finite simulated sample.
 SimulationScore score_simulation(const PeriodicSignals& input, const PeriodicSignals& output,
                                  const RealisationSimulator& simulate,
                                  std::size_t transient_samples);

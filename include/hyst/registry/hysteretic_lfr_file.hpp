@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hyst/dynamics/hysteretic_lfr.hpp"
+#include "hyst/dynamics/initial_state_estimate.hpp"
 #include "hyst/dynamics/periodic_signals.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/registry/actuator_force.hpp"
@@ -80,6 +81,15 @@ class AnyHystereticLfr {
   Eigen::MatrixXd simulate(const Eigen::MatrixXd& input) const;
   Eigen::MatrixXd simulate_from_periodic_state(const Eigen::MatrixXd& input,
                                                const Eigen::MatrixXd& one_period) const;
+  //! y (N x p) for u (N x m) from the linear-block state x0, the hysteresis channels at rest.
+  Eigen::MatrixXd simulate_from_state(const Eigen::MatrixXd& input,
+                                      const Eigen::VectorXd& x0) const;
+  //! The linear-block state that the first `samples` of (input, output) show
+  //! (initial_state_estimate.hpp): the linear block's least squares with the feedback open,
+  //! refined by Gauss-Newton on the whole model with the hysteresis channels from rest.
+  InitialStateEstimate estimate_initial_state(const Eigen::MatrixXd& input,
+                                              const Eigen::MatrixXd& output,
+                                              std::size_t samples) const;
 
  private:
   AnyHystereticLfr(AnyHystereticLfrModel model, nlohmann::json feedback, std::string name,
