@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -18,6 +19,7 @@
 #include "hyst/dynamics/fit_hysteretic_lfr.hpp"
 #include "hyst/dynamics/fit_state_space.hpp"
 #include "hyst/dynamics/free_run_check.hpp"
+#include "hyst/dynamics/initial_state_estimate.hpp"
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/dynamics/state_space.hpp"
 #include "hyst/io/numpy_file.hpp"
@@ -271,6 +273,20 @@ void bind_dynamics(py::module_& module) {
           "input"_a, "initial_state"_a = py::none(),
           "Outputs (samples, p) for inputs (samples, m), from rest or from `initial_state`; a "
           "RuntimeWarning when a pole lies outside the unit circle (the free run grows).")
+      .def(
+          "estimate_initial_state",
+          [](const StateSpace& m, const py::object& input, const py::object& output,
+             std::size_t samples) {
+            const auto u = bounded_record(input, "input");
+            const auto y = bounded_record(output, "output");
+            py::gil_scoped_release release;
+            const auto estimate = estimate_initial_state(m, u, y, samples);
+            return std::make_tuple(estimate.state, estimate.rms_residual);
+          },
+          "input"_a, "output"_a, "samples"_a,
+          "(state, rms_residual): the state x0 that the first `samples` rows of input (N, m) and "
+          "output (N, p) show, by least squares (the benchmarks' n_init rule); simulate(input, "
+          "initial_state=state) then continues the record.")
       .def("periodic_state", &StateSpace::periodic_state, "one_period"_a,
            "The state one period of the periodic input (N, m) returns to.")
       .def("simulate_periodic", &StateSpace::simulate_periodic, "one_period"_a,
@@ -407,6 +423,34 @@ void bind_dynamics(py::module_& module) {
           "input"_a,
           "Outputs (N, p) for inputs (N, m) from rest; a RuntimeWarning when a pole of the "
           "linear block lies outside the unit circle.")
+      .def(
+          "simulate_from_state",
+          [](const AnyHystereticLfr& model, const py::object& input, const Eigen::VectorXd& state) {
+            const auto u = bounded_record(input, "input");
+            if (state.size() != Eigen::Index(model.order()))
+              throw Error(fmt::format("state: {} values for a linear block of {} states",
+                                      state.size(), model.order()));
+            py::gil_scoped_release release;
+            return model.simulate_from_state(u, state);
+          },
+          "input"_a, "state"_a,
+          "Outputs (N, p) for inputs (N, m) from the linear block's state `state` (n,), the "
+          "hysteresis channels at rest.")
+      .def(
+          "estimate_initial_state",
+          [](const AnyHystereticLfr& model, const py::object& input, const py::object& output,
+             std::size_t samples) {
+            const auto u = bounded_record(input, "input");
+            const auto y = bounded_record(output, "output");
+            py::gil_scoped_release release;
+            const auto estimate = model.estimate_initial_state(u, y, samples);
+            return std::make_tuple(estimate.state, estimate.rms_residual, estimate.iterations);
+          },
+          "input"_a, "output"_a, "samples"_a,
+          "(state, rms_residual, iterations): the linear block's state that the first `samples` "
+          "rows of input and output show (least squares with the feedback open, then "
+          "Gauss-Newton on the whole model; the hysteresis channels from rest); "
+          "simulate_from_state(input, state) then continues the record.")
       .def(
           "simulate_periodic",
           [](const AnyHystereticLfr& model, const py::object& one_period) {

@@ -220,6 +220,28 @@ def test_hysteretic_lfr_agrees_with_its_loop_written_in_numpy(tmp_path):
     np.testing.assert_allclose(model.simulate(np.tile(period, (60, 1)))[-50:], steady, atol=1e-9)
 
 
+def test_initial_state_from_the_first_outputs():
+    # The numpy loop above with the state x0 = 2: the first 40 outputs give it back, and the
+    # run from it continues the record.
+    linear = hyst.StateSpace([[0.9]], [[0.5, -0.3]], [[1.2], [0.8]], [[0.1, 0.25], [0.4, 0.0]],
+                             sample_time=0.01)
+    model = hyst.HystereticLfr(linear, inputs=1, feedback=[pi_feedback(0.5)])
+    k = np.arange(200)
+    u = np.sin(2 * np.pi * k / 50)[:, None]
+    y = model.simulate_from_state(u, np.array([2.0]))
+    state, rms, iterations = model.estimate_initial_state(u, y, 40)
+    assert state == pytest.approx([2.0], abs=1e-6) and rms < 1e-8 and iterations >= 1
+    np.testing.assert_allclose(model.simulate_from_state(u, state), y, atol=1e-6)
+    with pytest.raises(hyst.Error, match="state: 2 values for a linear block of 1 states"):
+        model.simulate_from_state(u, np.zeros(2))
+    # A linear model: least squares, exact without noise.
+    plant = hyst.StateSpace([[0.8, 0.1], [0.0, -0.5]], [[1.0], [0.3]], [[1.0, 0.5]], [[0.0]])
+    measured = plant.simulate(u, initial_state=np.array([1.5, -3.0]))
+    x0, residual = plant.estimate_initial_state(u, measured, 10)
+    np.testing.assert_allclose(x0, [1.5, -3.0], atol=1e-9)
+    assert residual < 1e-10
+
+
 def test_hammerstein_is_its_blocks_then_the_linear_block():
     linear = hyst.StateSpace([[0.5, 0.1], [0.0, 0.7]], [[1.0, 0.0], [0.3, 1.0]],
                              [[1.0, 0.0], [0.5, 1.0]], [[0.0, 0.2], [0.1, 0.0]])
