@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -154,16 +155,33 @@ std::vector<ReadTable> read_tables(const std::filesystem::path& path,
   return tables;
 }
 
-void summarise(ColumnInfo& column, std::span<const double> values, double band_fraction) {
+//! Range, reversals and cycles of a column; with `times` (one per value) also its largest rate
+//! and its longest run between the same reversal points.
+void summarise(ColumnInfo& column, std::span<const double> values, double band_fraction,
+               const std::vector<double>* times = nullptr) {
   if (values.empty()) return;
   const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
   column.min = *lowest;
   column.max = *highest;
-  if (values.size() >= 2 && *highest > *lowest) {
-    const double band = band_fraction * (*highest - *lowest);
-    column.reversals = reversal_points(values, band).size();
-    column.cycles = cycles(values, band).size();
+  if (values.size() < 2 || !(*highest > *lowest)) return;
+  const double band = band_fraction * (*highest - *lowest);
+  const auto reversals = reversal_points(values, band);
+  column.reversals = reversals.size();
+  column.cycles = cycles(values, band).size();
+  if (times == nullptr || times->size() != values.size()) return;
+  const auto& t = *times;
+  double rate = 0.0;
+  for (std::size_t k = 1; k < values.size(); ++k)
+    rate = std::max(rate, std::abs(values[k] - values[k - 1]) / (t[k] - t[k - 1]));
+  column.largest_rate = rate;
+  // Runs between the reversal points, and from the start and to the end of the record.
+  double run = 0.0;
+  std::size_t begin = 0;
+  for (const auto& point : reversals) {
+    run = std::max(run, t[point.index] - t[begin]);
+    begin = point.index;
   }
+  column.longest_run = std::max(run, t.back() - t[begin]);
 }
 
 //! The index of the column named `name` or headed "name [unit]", or none.
@@ -182,13 +200,15 @@ const std::vector<double>* find_values(const ReadTable& table, std::string_view 
   return j ? &table.values[*j] : nullptr;
 }
 
-//! The table's time axis (options.time, else an aixACCT table's 'Time'), and every other column's
-//! largest rate and longest run between reversals on it; false when the table has no such column.
-bool add_time_axis(ReadTable& table, const RecordInfoOptions& options, const std::string& file) {
-  if (options.time.empty() && !table.aixacct) return false;
+//! The index of the table's time column (options.time, else an aixACCT table's 'Time') with its
+//! axis, or none when the table has no such column.
+std::optional<std::pair<std::size_t, TimeAxisInfo>> time_axis_of(const ReadTable& table,
+                                                                 const RecordInfoOptions& options,
+                                                                 const std::string& file) {
+  if (options.time.empty() && !table.aixacct) return std::nullopt;
   const std::string name = options.time.empty() ? "Time" : options.time;
   const auto t = column_index(table, name);
-  if (!t || !table.info.columns[*t].problem.empty()) return false;
+  if (!t || !table.info.columns[*t].problem.empty()) return std::nullopt;
   const auto& times = table.values[*t];
   const auto axis =
       time_axis(times, fmt::format("{}: {} time column '{}'", file, table.info.title, name));
@@ -202,27 +222,7 @@ bool add_time_axis(ReadTable& table, const RecordInfoOptions& options, const std
     info.min_step = std::min(info.min_step, times[k] - times[k - 1]);
     info.max_step = std::max(info.max_step, times[k] - times[k - 1]);
   }
-  table.info.time = info;
-  for (std::size_t j = 0; j < table.info.columns.size(); ++j) {
-    auto& column = table.info.columns[j];
-    const auto& values = table.values[j];
-    if (j == *t || values.size() != times.size() || column.max <= column.min) continue;
-    double rate = 0.0;
-    for (std::size_t k = 1; k < values.size(); ++k)
-      rate = std::max(rate, std::abs(values[k] - values[k - 1]) / (times[k] - times[k - 1]));
-    column.largest_rate = rate;
-    // Runs between the reversal points, and from the start and to the end of the record.
-    std::vector<std::size_t> ends{0};
-    for (const auto& point :
-         reversal_points(values, options.band_fraction * (column.max - column.min)))
-      ends.push_back(point.index);
-    ends.push_back(values.size() - 1);
-    double run = 0.0;
-    for (std::size_t i = 1; i < ends.size(); ++i)
-      run = std::max(run, times[ends[i]] - times[ends[i - 1]]);
-    column.longest_run = run;
-  }
-  return true;
+  return std::pair{*t, info};
 }
 
 //! The figures of every cycle of the (input, output) loop, or none when the table lacks one of
@@ -308,10 +308,15 @@ RecordInfo record_info(const std::filesystem::path& path, const RecordInfoOption
   if (tables.empty()) tables = read_tables(path, options, info.format);
   bool timed = false;
   for (auto& table : tables) {
-    for (std::size_t j = 0; j < table.info.columns.size(); ++j)
-      summarise(table.info.columns[j], table.values[j], options.band_fraction);
+    const auto time = time_axis_of(table, options, path.string());
+    if (time) table.info.time = time->second;
+    for (std::size_t j = 0; j < table.info.columns.size(); ++j) {
+      const bool timed_column = time && j != time->first;
+      summarise(table.info.columns[j], table.values[j], options.band_fraction,
+                timed_column ? &table.values[time->first] : nullptr);
+    }
     table.info.loops = loop_figures(table, options);
-    timed = add_time_axis(table, options, path.string()) || timed;
+    timed = timed || time.has_value();
     info.tables.push_back(std::move(table.info));
   }
   if (!options.time.empty() && !timed) {

@@ -19,6 +19,7 @@
 #include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/model_registry.hpp"
 #include "hyst/registry/state_space_file.hpp"
+#include "random_matrix.hpp"
 
 namespace hyst::hysteretic_lfr_test {
 namespace {
@@ -27,15 +28,7 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using nlohmann::json;
 
-MatrixXd random_matrix(Eigen::Index rows, Eigen::Index cols, std::mt19937_64& random,
-                       double scale = 1.0) {
-  std::normal_distribution<double> gauss(0.0, scale);
-  MatrixXd m(rows, cols);
-  for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i)
-      m(i, j) = gauss(random);
-  return m;
-}
+using test::random_matrix;
 
 // A stable random A (spectral radius 0.8) of order n.
 MatrixXd stable_a(Eigen::Index n, std::mt19937_64& random) {

@@ -16,6 +16,7 @@
 #include "hyst/dynamics/simulation_score.hpp"
 #include "hyst/registry/hysteretic_lfr_file.hpp"
 #include "hyst/registry/model_registry.hpp"
+#include "random_matrix.hpp"
 
 namespace hyst {
 namespace {
@@ -23,23 +24,16 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-MatrixXd gaussian(Eigen::Index rows, Eigen::Index cols, std::mt19937_64& random, double scale) {
-  std::normal_distribution<double> gauss(0.0, scale);
-  MatrixXd m(rows, cols);
-  for (Eigen::Index i = 0; i < rows; ++i)
-    for (Eigen::Index j = 0; j < cols; ++j)
-      m(i, j) = gauss(random);
-  return m;
-}
+using test::random_matrix;
 
 // Four states with the poles 0.9, 0.7, -0.5, 0.3 (upper triangular A), m inputs, p outputs.
 StateSpace stable_model(Eigen::Index m, Eigen::Index p, std::mt19937_64& random) {
   StateSpace::Params params;
-  params.a = gaussian(4, 4, random, 0.2).triangularView<Eigen::StrictlyUpper>();
+  params.a = random_matrix(4, 4, random, 0.2).triangularView<Eigen::StrictlyUpper>();
   params.a.diagonal() << 0.9, 0.7, -0.5, 0.3;
-  params.b = gaussian(4, m, random, 1.0);
-  params.c = gaussian(p, 4, random, 1.0);
-  params.d = gaussian(p, m, random, 0.1);
+  params.b = random_matrix(4, m, random, 1.0);
+  params.c = random_matrix(p, 4, random, 1.0);
+  params.d = random_matrix(p, m, random, 0.1);
   params.sample_time = 1e-3;
   return StateSpace(params);
 }
@@ -47,8 +41,8 @@ StateSpace stable_model(Eigen::Index m, Eigen::Index p, std::mt19937_64& random)
 TEST(InitialStateEstimate, ALinearModelsStateFromItsFirstSamples) {
   std::mt19937_64 random(3);
   const auto model = stable_model(2, 2, random);
-  const VectorXd truth = gaussian(4, 1, random, 3.0);
-  const MatrixXd u = gaussian(200, 2, random, 1.0);
+  const VectorXd truth = random_matrix(4, 1, random, 3.0);
+  const MatrixXd u = random_matrix(200, 2, random, 1.0);
   auto state = model.make_state(truth);
   const MatrixXd y = model.simulate(u, state);
 
@@ -59,7 +53,7 @@ TEST(InitialStateEstimate, ALinearModelsStateFromItsFirstSamples) {
 
   // Noise of 1e-3 on the outputs: the state to about the noise over sqrt(samples) times the
   // observability's gain, the residual at the noise level.
-  const MatrixXd noisy = y + gaussian(200, 2, random, 1e-3);
+  const MatrixXd noisy = y + random_matrix(200, 2, random, 1e-3);
   const auto estimate = estimate_initial_state(model, u, noisy, 100);
   EXPECT_LT((estimate.state - truth).norm(), 0.02);
   EXPECT_NEAR(estimate.rms_residual, 1e-3, 3e-4);
@@ -79,8 +73,8 @@ TEST(InitialStateEstimate, AHystereticLfrsStateByGaussNewton) {
   const auto channel = pi.create(
       nlohmann::json{{"thresholds", {0.0, 0.3, 0.8}}, {"weights", {0.5, 0.3, 0.2}}}, nullptr);
   const AnyHystereticLfr model(StateSpace(linear), 1, {channel.get(), channel.get()});
-  const VectorXd truth = gaussian(4, 1, random, 2.0);
-  const MatrixXd u = gaussian(300, 1, random, 1.0);
+  const VectorXd truth = random_matrix(4, 1, random, 2.0);
+  const MatrixXd u = random_matrix(300, 1, random, 1.0);
   const MatrixXd y = model.simulate_from_state(u, truth);
 
   const auto estimate = model.estimate_initial_state(u, y, 60);
@@ -107,8 +101,8 @@ TEST(InitialStateEstimate, TheScoreWithInitSamplesStartsFromTheEstimatedState) {
   input.periods = 1;
   PeriodicSignals output = input;
   for (std::size_t r = 0; r < 2; ++r) {
-    const MatrixXd u = gaussian(100, 1, random, 1.0);
-    auto state = model.make_state(gaussian(4, 1, random, 20.0));
+    const MatrixXd u = random_matrix(100, 1, random, 1.0);
+    auto state = model.make_state(random_matrix(4, 1, random, 20.0));
     const MatrixXd y = model.simulate(u, state);
     for (Eigen::Index n = 0; n < 100; ++n) {
       input.values.push_back(u(n, 0));

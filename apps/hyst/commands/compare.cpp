@@ -65,9 +65,8 @@ void report_held_out_domain(const std::string& line, bool strict) {
 
 //! The sample time of the records of `data` (--time, --sample-time, an aixACCT 'Time'
 //! column): the models with time in them are fitted at it. Fits need a uniform time axis.
-std::optional<double> records_sample_time(const DataSource& data, const TimeOptions& options,
-                                          std::size_t samples) {
-  const auto time = record_time(data, options, samples);
+std::optional<double> records_sample_time(const DataSource& data,
+                                          const std::optional<RecordTime>& time) {
   if (!time) return std::nullopt;
   if (!time->axis.uniform()) {
     throw Error(
@@ -157,7 +156,8 @@ void run_cross_record(const CompareCommandOptions& options, CrossRecordOptions c
   io::OutputSet set(folder, names);
   const DataSource data(options.data, options.table);
   const auto fit = read_records(data, options.fit_records, "--fit-records");
-  compare.sample_time = records_sample_time(data, options.time, fit.front().input.size());
+  compare.sample_time =
+      records_sample_time(data, record_time(data, options.time, fit.front().input.size()));
   ProgressDisplay display("hyst compare", options.progress.mode());
   compare.progress = display.callback();
   const auto comparison =
@@ -223,7 +223,8 @@ void run(const CompareCommandOptions& options) {
 
   const DataSource data(options.data, options.table);
   const auto record = read_column_pair(data, options.input, options.output, "data");
-  compare.sample_time = records_sample_time(data, options.time, record.input.size());
+  const auto time = record_time(data, options.time, record.input.size());
+  compare.sample_time = records_sample_time(data, time);
   ProgressDisplay display("hyst compare", options.progress.mode());
   compare.progress = display.callback();
   const auto comparison = compare_models(record.input, record.output, compare);
@@ -260,7 +261,7 @@ void run(const CompareCommandOptions& options) {
       output_unit,
       {}};
   // The figures over time in seconds when the record has a time axis.
-  if (const auto time = record_time(data, options.time, record.input.size())) {
+  if (time) {
     labels.time = time->times;
     if (labels.time.empty()) {
       for (std::size_t k = 0; k < record.input.size(); ++k)
